@@ -1,0 +1,150 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "fdmOuterLoopControl.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fdmOuterLoopControl::read()
+{
+    const dictionary& d = dict();
+
+    nCorrectors_ = d.get<label>("nCorrectors");
+    if (nCorrectors_ < 1)
+    {
+        FatalIOErrorInFunction(d)
+            << "nCorrectors " << nCorrectors_ << " in " << d.name()
+            << ": allowed values are integers >= 1 (thesis: 2)"
+            << exit(FatalIOError);
+    }
+
+    nOuterCorrectors_ = d.get<label>("nOuterCorrectors");
+    if (nOuterCorrectors_ < 1)
+    {
+        FatalIOErrorInFunction(d)
+            << "nOuterCorrectors " << nOuterCorrectors_ << " in "
+            << d.name() << ": allowed values are integers >= 1"
+            << exit(FatalIOError);
+    }
+
+    outerTolerance_ = d.get<scalar>("outerTolerance");
+    if (!(outerTolerance_ >= 0))
+    {
+        FatalIOErrorInFunction(d)
+            << "outerTolerance " << outerTolerance_ << " in " << d.name()
+            << ": allowed values are >= 0" << exit(FatalIOError);
+    }
+
+    const dictionary& solDict = mesh_.solutionDict();
+    const bool relaxed = mesh_.relaxEquation("U");
+    const scalar alpha = relaxed ? mesh_.equationRelaxationFactor("U") : 1;
+    if (!(alpha > 0 && alpha < 1))
+    {
+        FatalIOErrorInFunction(solDict)
+            << "relaxationFactors { equations { U ... } } in "
+            << solDict.name() << (relaxed ? " is " : " is missing")
+            << (relaxed ? Foam::name(alpha) : word::null) << nl
+            << "    allowed values: 0 < U < 1 (thesis: 0.9). Without inertia"
+            << " SIMPLEC's a_C - H_1 vanishes (thesis eq 2.36) and only"
+            << " under-relaxation keeps it finite."
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdmOuterLoopControl::fdmOuterLoopControl
+(
+    const fvMesh& mesh,
+    const word& algorithmName
+)
+:
+    mesh_(mesh),
+    algorithmName_(algorithmName),
+    nCorrectors_(2),
+    nOuterCorrectors_(1),
+    outerTolerance_(0),
+    iteration_(0),
+    changeU_(GREAT),
+    residualU_(GREAT),
+    residualp_(GREAT)
+{
+    read();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+const Foam::dictionary& Foam::fdmOuterLoopControl::dict() const
+{
+    return mesh_.solutionDict().subDict(algorithmName_);
+}
+
+
+void Foam::fdmOuterLoopControl::start()
+{
+    read();
+    iteration_ = 0;
+    changeU_ = GREAT;
+    residualU_ = GREAT;
+    residualp_ = GREAT;
+}
+
+
+void Foam::fdmOuterLoopControl::setResiduals
+(
+    const scalar changeU,
+    const scalar residualU,
+    const scalar residualp
+)
+{
+    changeU_ = changeU;
+    residualU_ = residualU;
+    residualp_ = residualp;
+}
+
+
+bool Foam::fdmOuterLoopControl::converged() const
+{
+    return changeU_ < outerTolerance_;
+}
+
+
+bool Foam::fdmOuterLoopControl::loop()
+{
+    if (iteration_ > 0)
+    {
+        Info<< algorithmName_ << ": outer iteration " << iteration_
+            << ", relative change U " << changeU_
+            << " (initial residuals U " << residualU_
+            << ", p " << residualp_ << ")" << endl;
+    }
+
+    if (iteration_ > 0 && converged())
+    {
+        Info<< algorithmName_ << ": converged in " << iteration_
+            << " outer iterations" << nl << endl;
+        return false;
+    }
+
+    if (iteration_ >= nOuterCorrectors_)
+    {
+        WarningInFunction
+            << algorithmName_ << " not converged after " << iteration_
+            << " outer iterations (nOuterCorrectors in " << dict().name()
+            << "): relative change of U " << changeU_
+            << " above outerTolerance " << outerTolerance_
+            << ". Raise nOuterCorrectors or outerTolerance."
+            << nl << endl;
+        return false;
+    }
+
+    ++iteration_;
+    return true;
+}
+
+
+// ************************************************************************* //

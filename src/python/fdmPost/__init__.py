@@ -1,0 +1,1 @@
+"""fdmSuspension post-processing helpers (Python 3, numpy; Debian packages)."""

@@ -1,0 +1,103 @@
+// Unit tests for Foam::fdm::periodicBox (src/fdmParticles/core/periodicBox)
+
+#include "periodicBox.H"
+
+#include <gtest/gtest.h>
+
+using namespace Foam;
+
+namespace
+{
+
+const fdm::periodicBox box
+(
+    point(-1, 0, 2),
+    point(3, 10, 4),
+    FixedList<bool, 3>({true, false, true})
+);
+
+} // namespace
+
+
+TEST(periodicBox, wrapLeavesInsidePointsUnchanged)
+{
+    const point p(0.5, 3.0, 3.5);
+    const point w = box.wrap(p);
+    EXPECT_DOUBLE_EQ(w.x(), p.x());
+    EXPECT_DOUBLE_EQ(w.y(), p.y());
+    EXPECT_DOUBLE_EQ(w.z(), p.z());
+}
+
+
+TEST(periodicBox, wrapMapsThroughPeriodicFacesOnly)
+{
+    // x = 3.5 is 0.5 past the upper face (span 4); x = -1.25 lies 0.25 below
+    // the lower face; y is not periodic and must stay outside.
+    const point w1 = box.wrap(point(3.5, 12.0, 1.0));
+    EXPECT_NEAR(w1.x(), -0.5, 1e-15);
+    EXPECT_DOUBLE_EQ(w1.y(), 12.0);
+    EXPECT_NEAR(w1.z(), 3.0, 1e-15);
+
+    const point w2 = box.wrap(point(-1.25, -2.0, 4.0));
+    EXPECT_NEAR(w2.x(), 2.75, 1e-15);
+    EXPECT_DOUBLE_EQ(w2.y(), -2.0);
+    EXPECT_NEAR(w2.z(), 2.0, 1e-15);   // upper face maps to lower face
+}
+
+
+TEST(periodicBox, wrapHandlesSeveralPeriods)
+{
+    const point w = box.wrap(point(-1 + 4*7 + 0.3, 5, 2 - 2*3 + 0.1));
+    EXPECT_NEAR(w.x(), -0.7, 1e-12);
+    EXPECT_NEAR(w.z(), 2.1, 1e-12);
+}
+
+
+TEST(periodicBox, wrapResultAlwaysInsideHalfOpenBox)
+{
+    // Points just below the lower face: floor() rounding must not return
+    // the excluded upper bound
+    for (const scalar eps : {1e-17, 1e-16, 1e-15, 1e-12})
+    {
+        const point w = box.wrap(point(-1 - eps, 0, 2 - eps));
+        EXPECT_GE(w.x(), -1.0);
+        EXPECT_LT(w.x(), 3.0);
+        EXPECT_GE(w.z(), 2.0);
+        EXPECT_LT(w.z(), 4.0);
+    }
+}
+
+
+TEST(periodicBox, minimumImageIsShortestSeparation)
+{
+    // Separation 3.5 along x (span 4) is -0.5 through the periodic face;
+    // along y (not periodic) it stays 9.
+    const vector m = box.minimumImage(vector(3.5, 9.0, -1.5));
+    EXPECT_NEAR(m.x(), -0.5, 1e-15);
+    EXPECT_DOUBLE_EQ(m.y(), 9.0);
+    EXPECT_NEAR(m.z(), 0.5, 1e-15);
+
+    for (const scalar dx : {-7.9, -2.1, -0.3, 0.0, 1.9, 6.2})
+    {
+        const scalar mx = box.minimumImage(vector(dx, 0, 0)).x();
+        EXPECT_LE(std::abs(mx), 2.0 + 1e-14);
+        // Same point modulo the period
+        const scalar k = (dx - mx)/4.0;
+        EXPECT_NEAR(k, std::round(k), 1e-12);
+    }
+}
+
+
+TEST(periodicBox, rejectsDegenerateBox)
+{
+    FatalError.throwExceptions();
+    EXPECT_THROW
+    (
+        fdm::periodicBox
+        (
+            point(0, 0, 0), point(1, 0, 1), FixedList<bool, 3>(true)
+        ),
+        Foam::error
+    );
+    FatalError.dontThrowExceptions();
+}
