@@ -5,15 +5,7 @@
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir planePoiseuilleTwoPointWall)
-cloneCase planeChannel "$work"
-(
-    cd "$work" || exit 1
-    foamDictionary -entry meanPressureGradient -set "(-8 0 0)" constant/flowProperties > /dev/null
-    for wall in bottomWall topWall
-    do
-        foamDictionary -entry "boundaryField.$wall.value" -set "uniform (0 0 0)" 0/U > /dev/null
-    done
-) || exit 1
+poiseuilleChannel "$work" fixedValue || exit 1
 runSerialAndParallel "$work" || exit 1
 
 "$FDM_PYTHON" "$caseTemplates/checkChannelProfile.py" --case "$work" --time 1 \

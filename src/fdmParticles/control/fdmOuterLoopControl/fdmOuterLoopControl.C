@@ -5,6 +5,8 @@
 
 #include "fdmOuterLoopControl.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::fdmOuterLoopControl::read()
@@ -104,6 +106,20 @@ void Foam::fdmOuterLoopControl::setResiduals
     changeU_ = changeU;
     residualU_ = residualU;
     residualp_ = residualp;
+
+    if (!std::isfinite(changeU_ + residualU_ + residualp_))
+    {
+        FatalErrorInFunction
+            << algorithmName_ << " outer iteration " << iteration_
+            << " at time " << mesh_.time().timeName()
+            << " produced a non-finite velocity or residual (change U "
+            << changeU_ << ", residuals U " << residualU_ << ", p "
+            << residualp_ << ")." << nl
+            << "    Lower the U relaxation factor in "
+            << mesh_.solutionDict().name() << " or check the boundary"
+            << " conditions; the last written time is the last good state."
+            << exit(FatalError);
+    }
 }
 
 
