@@ -153,19 +153,11 @@ secondOrderWallVelocityFvPatchVectorField
 Foam::tmp<Foam::vectorField>
 Foam::secondOrderWallVelocityFvPatchVectorField::snGrad() const
 {
-    // -du/ds (outward normal) = -a (u_1 - u_w) + b (u_2 - u_w)
+    // -du/ds (outward normal) = -a (u_1 - u_w) + b (u_2 - u_w);
+    // b = 0 where there is no second cell (two-point gradient)
     buildStencil();
     const vectorField& uw = *this;
-    const vectorField u2(secondCellValues());
-    tmp<vectorField> tg(-a_*(patchInternalField() - uw));
-    forAll(u2, i)
-    {
-        if (secondCell_[i] >= 0)
-        {
-            tg.ref()[i] += b_[i]*(u2[i] - uw[i]);
-        }
-    }
-    return tg;
+    return -a_*(patchInternalField() - uw) + b_*(secondCellValues() - uw);
 }
 
 
