@@ -1,0 +1,135 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "pairSearch.H"
+#include "labelList.H"
+#include "Pair.H"
+#include <algorithm>
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+void Foam::fdm::findNearPairs
+(
+    const periodicBox& box,
+    const UList<point>& positions,
+    const UList<scalar>& radii,
+    const scalar cutoff,
+    DynamicList<labelPair>& pairs
+)
+{
+    pairs.clear();
+    const label n = positions.size();
+    if (n < 2)
+    {
+        return;
+    }
+
+    const scalar binSize = 2*max(radii) + cutoff;
+
+    // Bins per direction; the bin index of a position outside the box along
+    // a non-periodic direction is clamped to the end bins.
+    FixedList<label, 3> nBins;
+    for (direction d = 0; d < 3; ++d)
+    {
+        nBins[d] = max(label(1), label(box.span()[d]/binSize));
+    }
+
+    auto binCoord = [&](const point& x, const direction d)
+    {
+        const label b = label((x[d] - box.min()[d])/box.span()[d]*nBins[d]);
+        return min(max(b, label(0)), nBins[d] - 1);
+    };
+    auto binIndex = [&](const label i, const label j, const label k)
+    {
+        return i + nBins[0]*(j + nBins[1]*k);
+    };
+
+    const label nTotal = nBins[0]*nBins[1]*nBins[2];
+    labelList head(nTotal, -1);
+    labelList next(n, -1);
+    List<FixedList<label, 3>> coords(n);
+
+    for (label p = 0; p < n; ++p)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            coords[p][d] = binCoord(positions[p], d);
+        }
+        const label b = binIndex(coords[p][0], coords[p][1], coords[p][2]);
+        next[p] = head[b];
+        head[b] = p;
+    }
+
+    DynamicList<label> neighbourBins(27);
+
+    for (label p = 0; p < n; ++p)
+    {
+        // Neighbour bins of p's bin, wrapped across periodic directions and
+        // made unique (with fewer than three bins a wrap revisits a bin).
+        neighbourBins.clear();
+        for (label dk = -1; dk <= 1; ++dk)
+        for (label dj = -1; dj <= 1; ++dj)
+        for (label di = -1; di <= 1; ++di)
+        {
+            FixedList<label, 3> c({coords[p][0] + di, coords[p][1] + dj,
+                                   coords[p][2] + dk});
+            bool valid = true;
+            for (direction d = 0; d < 3; ++d)
+            {
+                if (c[d] < 0 || c[d] >= nBins[d])
+                {
+                    if (box.periodic(d))
+                    {
+                        c[d] = (c[d] + nBins[d]) % nBins[d];
+                    }
+                    else
+                    {
+                        valid = false;
+                    }
+                }
+            }
+            if (valid)
+            {
+                neighbourBins.append(binIndex(c[0], c[1], c[2]));
+            }
+        }
+        std::sort(neighbourBins.begin(), neighbourBins.end());
+        const auto last =
+            std::unique(neighbourBins.begin(), neighbourBins.end());
+        neighbourBins.setSize(last - neighbourBins.begin());
+
+        for (const label b : neighbourBins)
+        {
+            for (label q = head[b]; q != -1; q = next[q])
+            {
+                if (q <= p)
+                {
+                    continue;
+                }
+                const vector d =
+                    box.minimumImage(positions[q] - positions[p]);
+                const scalar reach = radii[p] + radii[q] + cutoff;
+                if (magSqr(d) < sqr(reach))
+                {
+                    pairs.append(labelPair(p, q));
+                }
+            }
+        }
+    }
+
+    std::sort
+    (
+        pairs.begin(),
+        pairs.end(),
+        [](const labelPair& x, const labelPair& y)
+        {
+            return x.first() < y.first()
+                || (x.first() == y.first() && x.second() < y.second());
+        }
+    );
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,238 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "particleVelocitySystem.H"
+#include "rigidBodyMoments.H"
+#include "error.H"
+
+#include <Eigen/Sparse>
+#include <Eigen/IterativeLinearSolvers>
+
+namespace
+{
+
+typedef Eigen::SparseMatrix<double> sparseMatrix;
+typedef Eigen::Triplet<double> triplet;
+
+} // namespace
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdm::particleVelocitySystem::particleVelocitySystem
+(
+    const label nParticles
+)
+:
+    nParticles_(nParticles),
+    rhs_(nDof*nParticles, Zero),
+    prescribedValue_(nDof*nParticles, Zero),
+    prescribed_(nDof*nParticles, false)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fdm::particleVelocitySystem::clear()
+{
+    rows_.clear();
+    cols_.clear();
+    values_.clear();
+    rhs_ = Zero;
+    prescribedValue_ = Zero;
+    prescribed_ = false;
+}
+
+
+void Foam::fdm::particleVelocitySystem::addEntry
+(
+    const label row,
+    const label col,
+    const scalar value
+)
+{
+    rows_.append(row);
+    cols_.append(col);
+    values_.append(value);
+}
+
+
+void Foam::fdm::particleVelocitySystem::addMass
+(
+    const label i,
+    const rigidBodyMoments& moments,
+    const scalar scale
+)
+{
+    for (direction r = 0; r < nDof; ++r)
+    {
+        for (direction c = 0; c < nDof; ++c)
+        {
+            const scalar m = moments.entry(r, c);
+            if (m != 0)
+            {
+                addEntry(nDof*i + r, nDof*i + c, scale*m);
+            }
+        }
+    }
+}
+
+
+void Foam::fdm::particleVelocitySystem::addRhs
+(
+    const label i,
+    const vector& force,
+    const vector& torque
+)
+{
+    for (direction d = 0; d < 3; ++d)
+    {
+        rhs_[nDof*i + d] += force[d];
+        rhs_[nDof*i + 3 + d] += torque[d];
+    }
+}
+
+
+void Foam::fdm::particleVelocitySystem::prescribe
+(
+    const label i,
+    const direction dof,
+    const scalar value
+)
+{
+    prescribed_[nDof*i + dof] = true;
+    prescribedValue_[nDof*i + dof] = value;
+}
+
+
+Foam::fdm::particleVelocitySystem::solveInfo
+Foam::fdm::particleVelocitySystem::solve
+(
+    const scalar tolerance,
+    const label maxIterations,
+    List<vector>& U,
+    List<vector>& Omega
+) const
+{
+    const label n = nDof*nParticles_;
+
+    // Eliminate prescribed unknowns: known columns go to the right-hand side,
+    // their rows become identity rows (keeps the matrix SPD).
+    Eigen::VectorXd b(n);
+    for (label k = 0; k < n; ++k)
+    {
+        b[k] = prescribed_[k] ? prescribedValue_[k] : rhs_[k];
+    }
+
+    std::vector<triplet> entries;
+    entries.reserve(values_.size() + n);
+    forAll(values_, e)
+    {
+        const label r = rows_[e];
+        const label c = cols_[e];
+        if (prescribed_[r])
+        {
+            continue;
+        }
+        if (prescribed_[c])
+        {
+            b[r] -= values_[e]*prescribedValue_[c];
+            continue;
+        }
+        entries.push_back(triplet(r, c, values_[e]));
+    }
+    for (label k = 0; k < n; ++k)
+    {
+        if (prescribed_[k])
+        {
+            entries.push_back(triplet(k, k, 1));
+        }
+    }
+
+    sparseMatrix A(n, n);
+    A.setFromTriplets(entries.begin(), entries.end());
+
+    Eigen::VectorXd x(n);
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            x[nDof*i + d] = U[i][d];
+            x[nDof*i + 3 + d] = Omega[i][d];
+        }
+    }
+
+    Eigen::ConjugateGradient
+    <
+        sparseMatrix,
+        Eigen::Lower|Eigen::Upper,
+        Eigen::IncompleteCholesky<double>
+    > cg;
+    cg.setTolerance(tolerance);
+    cg.setMaxIterations(maxIterations);
+    cg.compute(A);
+    if (cg.info() != Eigen::Success)
+    {
+        FatalErrorInFunction
+            << "Incomplete-Cholesky factorisation of the particle system"
+            << " (thesis eq 2.43) failed: the matrix is not positive definite."
+            << abort(FatalError);
+    }
+
+    x = cg.solveWithGuess(b, x);
+
+    for (label i = 0; i < nParticles_; ++i)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            U[i][d] = x[nDof*i + d];
+            Omega[i][d] = x[nDof*i + 3 + d];
+        }
+    }
+
+    solveInfo info;
+    info.iterations = cg.iterations();
+    info.relativeResidual = cg.error();
+    info.converged = (cg.info() == Eigen::Success);
+    return info;
+}
+
+
+void Foam::fdm::particleVelocitySystem::multiply
+(
+    const List<vector>& U,
+    const List<vector>& Omega,
+    List<vector>& force,
+    List<vector>& torque
+) const
+{
+    force.setSize(nParticles_);
+    torque.setSize(nParticles_);
+    force = Zero;
+    torque = Zero;
+
+    forAll(values_, e)
+    {
+        const label r = rows_[e];
+        const label c = cols_[e];
+        const label pc = c/nDof;
+        const direction dc = c % nDof;
+        const scalar x = dc < 3 ? U[pc][dc] : Omega[pc][dc - 3];
+
+        const label pr = r/nDof;
+        const direction dr = r % nDof;
+        if (dr < 3)
+        {
+            force[pr][dr] += values_[e]*x;
+        }
+        else
+        {
+            torque[pr][dr - 3] += values_[e]*x;
+        }
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,79 @@
+// Unit tests for Foam::fdm::findNearPairs (cell-linked list)
+
+#include "pairSearch.H"
+
+#include <gtest/gtest.h>
+#include <random>
+#include <set>
+
+using namespace Foam;
+
+namespace
+{
+
+// Reference: all pairs by brute force with the minimum-image convention
+std::set<std::pair<label, label>> bruteForcePairs(const fdm::periodicBox& box,
+    const List<point>& x, const List<scalar>& a, const scalar cutoff)
+{
+    std::set<std::pair<label, label>> pairs;
+    forAll(x, i)
+    {
+        for (label j = i + 1; j < x.size(); ++j)
+        {
+            const vector d = box.minimumImage(x[j] - x[i]);
+            if (mag(d) < a[i] + a[j] + cutoff)
+            {
+                pairs.insert({i, j});
+            }
+        }
+    }
+    return pairs;
+}
+
+void compareWithBruteForce(const fdm::periodicBox& box, const label n,
+    const unsigned seed)
+{
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<scalar> u01(0, 1);
+    List<point> x(n);
+    List<scalar> a(n);
+    forAll(x, i)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            x[i][d] = box.min()[d] + box.span()[d]*u01(gen);
+        }
+        a[i] = u01(gen) < 0.5 ? 1.0 : 1.4;
+    }
+
+    DynamicList<labelPair> pairs;
+    fdm::findNearPairs(box, x, a, 0.3, pairs);
+
+    const auto ref = bruteForcePairs(box, x, a, 0.3);
+    ASSERT_EQ(label(ref.size()), pairs.size());
+    for (const labelPair& p : pairs)
+    {
+        EXPECT_LT(p.first(), p.second());
+        EXPECT_EQ(ref.count({p.first(), p.second()}), 1u);
+    }
+}
+
+} // namespace
+
+
+TEST(pairSearch, matchesBruteForceInAPeriodicChannel)
+{
+    const fdm::periodicBox box(point(0, -10, 0), point(20, 10, 20),
+        FixedList<bool, 3>({true, false, true}));
+    compareWithBruteForce(box, 800, 1);
+}
+
+
+TEST(pairSearch, matchesBruteForceWhenTheBoxHoldsFewerThanThreeBins)
+{
+    // 7 wide with bins of 3.1: two bins per direction, so the periodic
+    // neighbour search wraps onto the same bin twice
+    const fdm::periodicBox box(point(0, 0, 0), point(7, 7, 7),
+        FixedList<bool, 3>({true, true, true}));
+    compareWithBruteForce(box, 40, 2);
+}
