@@ -18,9 +18,13 @@ Description
     Flow is driven by moving walls (Couette), cyclic patches and an imposed
     uniform mean pressure gradient (constant/flowProperties).
 
-    Particle coupling (indicator functions, lambda correction, particle
-    velocity solve) enters at the marked place of the outer loop; without
-    particles lambda stays zero and the solver is a plain Stokes solver.
+    Rigid spheres (constant/particleProperties) enter through lambda: after
+    each SIMPLEC iteration the particle velocities are solved (eq 2.43) and
+    lambda and U corrected (eq 2.53).  Particles move between steps by
+    Adams-Bashforth.  A fresh start first solves at the initial positions so
+    that every written time holds positions, velocities and fields of the
+    same configuration.  Without particles lambda stays zero and the solver
+    is a plain Stokes solver.
 
 Usage
     fdmSuspensionFoam [-parallel] [-case dir]
@@ -31,6 +35,9 @@ Usage
 #include "fdmOuterLoopControl.H"
 #include "meanPressureGradient.H"
 #include "relativeChange.H"
+#include "fdmParticleCloud.H"
+#include "momentumBalance.H"
+#include "clockTime.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -51,39 +58,43 @@ int main(int argc, char *argv[])
     #include "createFields.H"
     #include "initContinuityErrs.H"
 
+    momentumBalance balance(mesh);
+    clockTime flowClock;
+    scalar flowSeconds = 0;
+    scalar outputSeconds = 0;
+    label nOuterTotal = 0;
+    const label startTimeIndex = runTime.timeIndex();
+
+    particles.prepare(lambda);
+    if (!particles.empty() && !particles.solved())
+    {
+        Info<< "Solving at the initial particle positions, time = "
+            << runTime.timeName() << nl << endl;
+        #include "stokesSolve.H"
+    }
+
     Info<< "\nStarting time loop\n" << endl;
 
     while (runTime.loop())
     {
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
-        outerLoop.start();
+        particles.move(runTime.deltaTValue(), lambda);
 
-        while (outerLoop.loop())
-        {
-            // Initial residuals of this outer iteration (convergence control)
-            scalar residualU = GREAT;
-            scalar residualp = GREAT;
-            U.storePrevIter();
-
-            #include "UEqn.H"
-            #include "pEqn.H"
-
-            outerLoop.setResiduals
-            (
-                fdm::relativeChange(U.primitiveField(), U.prevIter()),
-                residualU,
-                residualp
-            );
-
-            // Particle sub-problem (eqs 2.41-2.45) enters here.
-        }
+        #include "stokesSolve.H"
 
         #include "continuityErrs.H"
 
+        clockTime outputClock;
         runTime.write();
+        if (runTime.writeTime())
+        {
+            particles.writeState();
+            particles.writeVTK();
+        }
+        outputSeconds += outputClock.elapsedTime();
 
-        runTime.printExecutionTime(Info);
+        #include "reportTimings.H"
     }
 
     Info<< "End\n" << endl;

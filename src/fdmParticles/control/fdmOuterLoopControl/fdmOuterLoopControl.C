@@ -72,7 +72,11 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
     iteration_(0),
     changeU_(GREAT),
     residualU_(GREAT),
-    residualp_(GREAT)
+    residualp_(GREAT),
+    hasLambda_(false),
+    lambdaResidual_(GREAT),
+    lambdaTolerance_(0),
+    particleIterations_(0)
 {
     read();
 }
@@ -93,6 +97,8 @@ void Foam::fdmOuterLoopControl::start()
     changeU_ = GREAT;
     residualU_ = GREAT;
     residualp_ = GREAT;
+    hasLambda_ = false;
+    lambdaResidual_ = GREAT;
 }
 
 
@@ -123,9 +129,37 @@ void Foam::fdmOuterLoopControl::setResiduals
 }
 
 
+void Foam::fdmOuterLoopControl::setLambdaResidual
+(
+    const scalar residual,
+    const scalar tolerance,
+    const label particleIterations
+)
+{
+    hasLambda_ = true;
+    lambdaResidual_ = residual;
+    lambdaTolerance_ = tolerance;
+    particleIterations_ = particleIterations;
+
+    if (!std::isfinite(residual))
+    {
+        FatalErrorInFunction
+            << algorithmName_ << " outer iteration " << iteration_
+            << " at time " << mesh_.time().timeName()
+            << " produced a non-finite force density lambda." << nl
+            << "    Raise alphaLambdaFactor in constant/particleProperties"
+            << " (coupling) or lower the U relaxation factor; the last"
+            << " written time is the last good state." << exit(FatalError);
+    }
+}
+
+
 bool Foam::fdmOuterLoopControl::converged() const
 {
-    return changeU_ < outerTolerance_;
+    return
+        hasLambda_
+      ? lambdaResidual_ < lambdaTolerance_
+      : changeU_ < outerTolerance_;
 }
 
 
@@ -133,8 +167,13 @@ bool Foam::fdmOuterLoopControl::loop()
 {
     if (iteration_ > 0)
     {
-        Info<< algorithmName_ << ": outer iteration " << iteration_
-            << ", relative change U " << changeU_
+        Info<< algorithmName_ << ": outer iteration " << iteration_;
+        if (hasLambda_)
+        {
+            Info<< ", lambda residual " << lambdaResidual_
+                << ", particle solve " << particleIterations_ << " its";
+        }
+        Info<< ", relative change U " << changeU_
             << " (initial residuals U " << residualU_
             << ", p " << residualp_ << ")" << endl;
     }
@@ -146,14 +185,23 @@ bool Foam::fdmOuterLoopControl::loop()
         return false;
     }
 
+    const scalar tolerance = hasLambda_ ? lambdaTolerance_ : outerTolerance_;
+    if (iteration_ >= nOuterCorrectors_ && tolerance == 0)
+    {
+        Info<< algorithmName_ << ": fixed count of " << iteration_
+            << " outer iterations done" << nl << endl;
+        return false;
+    }
     if (iteration_ >= nOuterCorrectors_)
     {
         WarningInFunction
             << algorithmName_ << " not converged after " << iteration_
             << " outer iterations (nOuterCorrectors in " << dict().name()
-            << "): relative change of U " << changeU_
-            << " above outerTolerance " << outerTolerance_
-            << ". Raise nOuterCorrectors or outerTolerance."
+            << "): "
+            << (hasLambda_ ? "lambda residual " : "relative change of U ")
+            << (hasLambda_ ? lambdaResidual_ : changeU_) << " above "
+            << (hasLambda_ ? "lambdaTolerance " : "outerTolerance ")
+            << tolerance << ". Raise nOuterCorrectors or the tolerance."
             << nl << endl;
         return false;
     }

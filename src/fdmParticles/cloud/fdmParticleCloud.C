@@ -1,0 +1,296 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "fdmParticleCloud.H"
+#include "cyclicPolyPatch.H"
+#include "pairSearch.H"
+#include "constants.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::fdmParticleCloud::meshSpacing() const
+{
+    // The method (alpha_lambda = Delta^2/nu, the indicator widths, the
+    // calibrated sub-grid tables) assumes a uniform cubic mesh.
+    const scalarField& V = mesh_.V();
+    const scalar Vmin = gMin(V);
+    const scalar Vmax = gMax(V);
+
+    scalar worstAspect = 1;
+    forAll(mesh_.cells(), celli)
+    {
+        const boundBox bb(mesh_.cells()[celli].points(mesh_.faces(),
+            mesh_.points()), false);
+        worstAspect = max(worstAspect, cmptMax(bb.span())/cmptMin(bb.span()));
+    }
+    reduce(worstAspect, maxOp<scalar>());
+
+    if (Vmax - Vmin > 1e-6*Vmax || worstAspect - 1 > 1e-6)
+    {
+        FatalErrorInFunction
+            << "The particle coupling needs a uniform mesh of cubic cells"
+            << " (thesis 1, section 2.2.1): cell volumes range from "
+            << Vmin << " to " << Vmax << ", largest edge ratio "
+            << worstAspect << "." << nl
+            << "    Make the blockMeshDict cell counts proportional to the"
+            << " box edges, without grading." << exit(FatalError);
+    }
+
+    return Foam::cbrt(Vmax);
+}
+
+
+Foam::fdm::periodicBox Foam::fdmParticleCloud::meshBox() const
+{
+    const boundBox bounds(mesh_.points(), true);
+    FixedList<bool, 3> periodic(false);
+
+    for (const polyPatch& pp : mesh_.boundaryMesh())
+    {
+        if (!isA<cyclicPolyPatch>(pp))
+        {
+            continue;
+        }
+        vector area(Zero);
+        for (const vector& Sf : pp.faceAreas())
+        {
+            area += cmptMag(Sf);
+        }
+        reduce(area, sumOp<vector>());
+
+        const direction axis = findMax(area);
+        if (cmptMax(area) > 0)
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                if (d != axis && area[d] > 1e-9*area[axis])
+                {
+                    FatalErrorInFunction
+                        << "Cyclic patch " << pp.name() << " is not normal to"
+                        << " a coordinate axis; the particle coupling needs"
+                        << " an axis-aligned box." << exit(FatalError);
+                }
+            }
+            periodic[axis] = true;
+        }
+    }
+
+    return fdm::periodicBox(bounds.min(), bounds.max(), periodic);
+}
+
+
+void Foam::fdmParticleCloud::checkParticles() const
+{
+    const fileName& file = dict_.name();
+    const scalar minCellsPerRadius = 2;
+
+    forAll(position_, p)
+    {
+        const scalar a = radius_[p];
+        if (!(a > 0))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Particle " << p << " in " << file << " has radius " << a
+                << ": allowed values are > 0" << exit(FatalIOError);
+        }
+        if (a < minCellsPerRadius*delta_)
+        {
+            FatalIOErrorInFunction(dict_)
+                << "Particle " << p << " in " << file << " has radius " << a
+                << " = " << a/delta_ << " cells: the mesh (Delta = " << delta_
+                << ") is too coarse to resolve it." << nl
+                << "    At least " << minCellsPerRadius << " cells per radius"
+                << " are required; the method is calibrated at 5 (thesis 1,"
+                << " Delta = a1/5)." << exit(FatalIOError);
+        }
+        for (direction d = 0; d < 3; ++d)
+        {
+            const scalar x = position_[p][d];
+            const scalar lo = box_.min()[d];
+            const scalar hi = lo + box_.span()[d];
+            if (box_.periodic(d))
+            {
+                if (box_.span()[d] < 2*indicator_.supportRadius(a))
+                {
+                    FatalIOErrorInFunction(dict_)
+                        << "Particle " << p << " in " << file << ": its"
+                        << " support diameter " << 2*indicator_.supportRadius(a)
+                        << " exceeds the periodic length " << box_.span()[d]
+                        << " in direction " << d << "." << exit(FatalIOError);
+                }
+            }
+            else if (x - a < lo || x + a > hi)
+            {
+                FatalIOErrorInFunction(dict_)
+                    << "Particle " << p << " in " << file << " at "
+                    << position_[p] << " with radius " << a
+                    << " is not inside the domain: along direction " << d
+                    << " it must lie within [" << lo + a << ", " << hi - a
+                    << "] (the domain spans [" << lo << ", " << hi << "])."
+                    << exit(FatalIOError);
+            }
+        }
+    }
+
+    DynamicList<labelPair> overlapping;
+    fdm::findNearPairs(box_, position_, radius_, 0, overlapping);
+    if (overlapping.size())
+    {
+        const labelPair& pq = overlapping.first();
+        const label p = pq.first(), q = pq.second();
+        FatalIOErrorInFunction(dict_)
+            << overlapping.size() << " overlapping particle pair(s) in "
+            << file << ", the first: particles " << p << " at "
+            << position_[p] << " (radius " << radius_[p] << ") and " << q
+            << " at " << position_[q] << " (radius " << radius_[q]
+            << "), centre distance "
+            << mag(box_.minimumImage(position_[q] - position_[p]))
+            << " < " << radius_[p] + radius_[q] << exit(FatalIOError);
+    }
+}
+
+
+Foam::vector Foam::fdmParticleCloud::bodyForce(const label p) const
+{
+    const particleGroup& g = groups_[group_[p]];
+    const scalar V =
+        4.0/3.0*constant::mathematical::pi*pow3(radius_[p]);
+
+    // Buoyant weight (thesis eq 2.11d; gravity on the fluid is in p) and
+    // the external force, per unit fluid density like lambda
+    return (g.density()/rhoFluid_ - 1)*V*gravity_ + g.force()/rhoFluid_;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdmParticleCloud::fdmParticleCloud(const fvMesh& mesh, const scalar nu)
+:
+    mesh_(mesh),
+    dict_
+    (
+        IOobject
+        (
+            "particleProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::READ_IF_PRESENT,
+            IOobject::NO_WRITE
+        )
+    ),
+    rhoFluid_(1),
+    nu_(nu),
+    gravity_(Zero),
+    delta_(0),
+    indicator_(5, 0.3, 1),
+    alphaLambda_(0),
+    lambdaTolerance_(0),
+    lambdaToleranceFirstStep_(0),
+    solveTolerance_(1e-6),
+    box_(point::zero, point::one, FixedList<bool, 3>(false)),
+    domainVolume_(gSum(mesh.V())),
+    solved_(false),
+    hasHistory_(false),
+    firstSolveDone_(false),
+    system_(0),
+    timings_{0, 0, 0, 0},
+    lastSolve_{0, 0, true},
+    lambdaResidual_(0)
+{
+    if (!dict_.headerOk())
+    {
+        Info<< "No constant/particleProperties: particle-free Stokes flow"
+            << nl << endl;
+        return;
+    }
+
+    Info<< "Reading particleProperties" << nl;
+
+    const IOdictionary transport
+    (
+        IOobject
+        (
+            "transportProperties",
+            mesh.time().constant(),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    rhoFluid_ = transport.get<scalar>("rho");
+    if (!(rhoFluid_ > 0))
+    {
+        FatalIOErrorInFunction(transport)
+            << "rho " << rhoFluid_ << " in " << transport.name()
+            << ": allowed values are > 0 (fluid density, needed with"
+            << " particles)" << exit(FatalIOError);
+    }
+
+    delta_ = meshSpacing();
+    box_ = meshBox();
+    cellBins_.reset(new fdm::pointBins(mesh.C().primitiveField(), delta_*4));
+
+    gravity_ = dict_.getOrDefault<vector>("gravity", Zero);
+    readCoupling();
+    readGroups();
+    readParticles();
+    checkParticles();
+
+    system_ = fdm::particleVelocitySystem(size());
+    U_.setSize(size(), Zero);
+    Omega_.setSize(size(), Zero);
+    Uold_.setSize(size(), Zero);
+    force_.setSize(size(), Zero);
+    torque_.setSize(size(), Zero);
+    moments_.setSize(size());
+
+    readState();
+
+    Info<< "    " << size() << " particles in " << groups_.size()
+        << " group(s); Delta = " << delta_ << ", radius/Delta from "
+        << gMin(radius_)/delta_ << " to " << gMax(radius_)/delta_ << nl
+        << "    indicator b = " << indicator_.b() << ", c = "
+        << indicator_.c() << "; alpha_lambda = " << alphaLambda_ << nl
+        << "    periodic (x y z): (" << box_.periodic(0) << ' '
+        << box_.periodic(1) << ' ' << box_.periodic(2) << "), box "
+        << box_.min() << " + " << box_.span() << nl << endl;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fdmParticleCloud::lambdaTolerance() const
+{
+    return firstSolveDone_ ? lambdaTolerance_ : lambdaToleranceFirstStep_;
+}
+
+
+bool Foam::fdmParticleCloud::requiresBalancingGradient(vector& gradient) const
+{
+    gradient = Zero;
+    if (empty() || !(box_.periodic(0) && box_.periodic(1) && box_.periodic(2)))
+    {
+        return false;
+    }
+
+    forAll(position_, p)
+    {
+        if (groups_[group_[p]].translationPrescribed())
+        {
+            // A held particle absorbs any net force
+            return false;
+        }
+        gradient += bodyForce(p);
+    }
+
+    // Integral of the momentum equation over the periodic box:
+    // V0 grad(P0) = integral of lambda = sum of the particles' forces
+    gradient /= domainVolume_;
+    return true;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,146 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+
+Description
+    Particle state for restarts and VTK output for ParaView.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fdmParticleCloud.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "IOobject.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fdmParticleCloud::writeState() const
+{
+    if (empty() || !Pstream::master())
+    {
+        return;
+    }
+
+    const Time& runTime = mesh_.time();
+    const fileName dir = runTime.globalPath()/runTime.timeName();
+    mkDir(dir);
+
+    OFstream os(dir/"particleState");
+    // Full precision: a restart must continue the same trajectory
+    os.precision(17);
+    IOobject io
+    (
+        "particleState",
+        runTime.timeName(),
+        mesh_,
+        IOobject::NO_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+    io.writeHeader(os, "dictionary");
+
+    os.writeEntry("nParticles", size());
+    os.writeEntry("solved", solved_);
+    os.writeEntry("hasHistory", hasHistory_);
+    os.writeEntry("position", position_);
+    os.writeEntry("velocity", U_);
+    os.writeEntry("angularVelocity", Omega_);
+    os.writeEntry("previousVelocity", Uold_);
+    os.writeEntry("force", force_);
+    os.writeEntry("torque", torque_);
+    IOobject::writeEndDivider(os);
+}
+
+
+void Foam::fdmParticleCloud::writeVTK() const
+{
+    if (empty() || !Pstream::master())
+    {
+        return;
+    }
+
+    const Time& runTime = mesh_.time();
+    const fileName dir = runTime.globalPath()/"VTK";
+    mkDir(dir);
+    const word name = "particles_" + runTime.timeName() + ".vtk";
+
+    {
+        // Legacy ASCII polydata: one vertex per particle with its data;
+        // in ParaView show with the Glyph filter (sphere, scale by radius)
+        OFstream os(dir/name);
+        os.precision(10);
+        os  << "# vtk DataFile Version 3.0" << nl
+            << "fdmSuspension particles, time " << runTime.timeName() << nl
+            << "ASCII" << nl
+            << "DATASET POLYDATA" << nl
+            << "POINTS " << size() << " double" << nl;
+        for (const point& x : position_)
+        {
+            os  << x.x() << ' ' << x.y() << ' ' << x.z() << nl;
+        }
+        os  << "VERTICES " << size() << ' ' << 2*size() << nl;
+        forAll(position_, p)
+        {
+            os  << "1 " << p << nl;
+        }
+        os  << "POINT_DATA " << size() << nl
+            << "SCALARS radius double 1" << nl
+            << "LOOKUP_TABLE default" << nl;
+        for (const scalar a : radius_)
+        {
+            os  << a << nl;
+        }
+        os  << "SCALARS group int 1" << nl
+            << "LOOKUP_TABLE default" << nl;
+        for (const label g : group_)
+        {
+            os  << g << nl;
+        }
+
+        auto writeVectors = [&os](const char* title, const List<vector>& v)
+        {
+            os  << "VECTORS " << title << " double" << nl;
+            for (const vector& x : v)
+            {
+                os  << x.x() << ' ' << x.y() << ' ' << x.z() << nl;
+            }
+        };
+        writeVectors("velocity", U_);
+        writeVectors("angularVelocity", Omega_);
+        writeVectors("force", force_);
+        writeVectors("torque", torque_);
+    }
+
+    // Series file listing every particles_<time>.vtk present, by time
+    fileNameList files = readDir(dir, fileName::FILE);
+    DynamicList<Tuple2<scalar, word>> entries;
+    for (const fileName& f : files)
+    {
+        const word n = f.name();
+        if (n.startsWith("particles_") && n.hasExt("vtk"))
+        {
+            const word t = n.substr(10, n.size() - 14);
+            scalar value;
+            if (readScalar(t, value))
+            {
+                entries.append(Tuple2<scalar, word>(value, n));
+            }
+        }
+    }
+    Foam::sort(entries);
+
+    OFstream series(dir/"particles.vtk.series");
+    series.precision(12);
+    series << "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
+    forAll(entries, i)
+    {
+        series
+            << "    { \"name\" : \"" << entries[i].second().c_str()
+            << "\", \"time\" : " << entries[i].first() << " }"
+            << (i + 1 < entries.size() ? ",\n" : "\n");
+    }
+    series << "  ]\n}\n";
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,258 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+
+Description
+    Reading of constant/particleProperties: coupling parameters, groups and
+    the particle list (inline or from a file), and of the particle state of
+    the start time.
+
+\*---------------------------------------------------------------------------*/
+
+#include "fdmParticleCloud.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+void requirePositive
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar value,
+    const bool allowZero = false
+)
+{
+    if (!(value > 0 || (allowZero && value == 0)))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << ' ' << value << " in " << dict.name()
+            << ": allowed values are " << (allowZero ? ">= 0" : "> 0")
+            << exit(FatalIOError);
+    }
+}
+
+
+void expectPunctuation
+(
+    Istream& is,
+    const token::punctuationToken p,
+    const string& what
+)
+{
+    token t(is);
+    if (!(t.isPunctuation() && t.pToken() == p))
+    {
+        FatalIOErrorInFunction(is)
+            << "Expected '" << char(p) << "' " << what << " in "
+            << is.name() << " but found " << t.info() << nl
+            << "    each particle is a row (group (x y z) radius)"
+            << exit(FatalIOError);
+    }
+}
+
+} // namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fdmParticleCloud::readCoupling()
+{
+    const dictionary& c = dict_.subDict("coupling");
+
+    lambdaTolerance_ = c.get<scalar>("lambdaTolerance");
+    requirePositive(c, "lambdaTolerance", lambdaTolerance_, true);
+    lambdaToleranceFirstStep_ =
+        c.getOrDefault<scalar>("lambdaToleranceFirstStep", lambdaTolerance_);
+    requirePositive
+    (
+        c, "lambdaToleranceFirstStep", lambdaToleranceFirstStep_, true
+    );
+    solveTolerance_ = c.get<scalar>("particleSolveTolerance");
+    requirePositive(c, "particleSolveTolerance", solveTolerance_);
+
+    const scalar factor = c.getOrDefault<scalar>("alphaLambdaFactor", 1);
+    requirePositive(c, "alphaLambdaFactor", factor);
+
+    // alpha_lambda: viscous diffusion time over one cell (eq 2.41)
+    alphaLambda_ = factor*sqr(delta_)/nu_;
+
+    const dictionary ind(dict_.subOrEmptyDict("indicator"));
+    const scalar b = ind.getOrDefault<scalar>("b", 5);
+    const scalar cc = ind.getOrDefault<scalar>("c", 0.3);
+    requirePositive(dict_.subOrEmptyDict("indicator"), "b", b);
+    requirePositive(dict_.subOrEmptyDict("indicator"), "c", cc, true);
+    indicator_ = fdm::indicatorFunctions(b, cc, delta_);
+}
+
+
+void Foam::fdmParticleCloud::readGroups()
+{
+    groups_.clear();
+    const dictionary* gPtr = dict_.findDict("groups");
+    if (gPtr)
+    {
+        for (const entry& e : *gPtr)
+        {
+            if (!e.isDict())
+            {
+                FatalIOErrorInFunction(*gPtr)
+                    << "Entry " << e.keyword() << " in " << gPtr->name()
+                    << " is not a dictionary: each group is"
+                    << " name { density ..; translation ..; ... }"
+                    << exit(FatalIOError);
+            }
+            groups_.append(particleGroup(e.keyword(), e.dict(), rhoFluid_));
+        }
+    }
+}
+
+
+Foam::label Foam::fdmParticleCloud::groupIndex
+(
+    const word& name,
+    const dictionary& where
+) const
+{
+    forAll(groups_, g)
+    {
+        if (groups_[g].name() == name)
+        {
+            return g;
+        }
+    }
+
+    wordList names(groups_.size());
+    forAll(groups_, g)
+    {
+        names[g] = groups_[g].name();
+    }
+    FatalIOErrorInFunction(where)
+        << "Particle group " << name << " used in " << where.name()
+        << " is not defined in its groups dictionary" << nl
+        << "    defined groups: " << names << exit(FatalIOError);
+    return -1;
+}
+
+
+void Foam::fdmParticleCloud::readParticles()
+{
+    const bool inline_ = dict_.found("particles");
+    const bool fromFile = dict_.found("particlesFile");
+    if (inline_ == fromFile)
+    {
+        FatalIOErrorInFunction(dict_)
+            << dict_.name() << " needs exactly one of the keywords"
+            << " 'particles' (inline list) and 'particlesFile' (file name"
+            << " relative to constant/)" << exit(FatalIOError);
+    }
+
+    autoPtr<Istream> isPtr;
+    if (inline_)
+    {
+        isPtr.reset(new ITstream(dict_.lookup("particles")));
+    }
+    else
+    {
+        const fileName file =
+            mesh_.time().constant()/dict_.get<fileName>("particlesFile");
+        if (!isFile(file))
+        {
+            FatalIOErrorInFunction(dict_)
+                << "particlesFile " << file << " named in " << dict_.name()
+                << " does not exist" << exit(FatalIOError);
+        }
+        isPtr.reset(new IFstream(file));
+    }
+    Istream& is = isPtr();
+
+    DynamicList<label> group;
+    DynamicList<scalar> radius;
+    DynamicList<point> position;
+
+    token first(is);
+    if (first.isLabel())
+    {
+        // Optional count before the list, as OpenFOAM writes lists
+        first = token(is);
+    }
+    if (!(first.isPunctuation() && first.pToken() == token::BEGIN_LIST))
+    {
+        FatalIOErrorInFunction(is)
+            << "Expected a list of particles in " << is.name()
+            << " but found " << first.info() << nl
+            << "    each particle is a row (group (x y z) radius)"
+            << exit(FatalIOError);
+    }
+
+    while (true)
+    {
+        token t(is);
+        if (t.isPunctuation() && t.pToken() == token::END_LIST)
+        {
+            break;
+        }
+        if (!t.good() || is.eof())
+        {
+            FatalIOErrorInFunction(is)
+                << "Unterminated particle list in " << is.name()
+                << exit(FatalIOError);
+        }
+        is.putBack(t);
+        expectPunctuation(is, token::BEGIN_LIST, "at the start of a row");
+        word g;
+        point x;
+        scalar a;
+        is >> g >> x >> a;
+        expectPunctuation(is, token::END_LIST, "at the end of a row");
+
+        group.append(groupIndex(g, dict_));
+        position.append(box_.wrap(x));
+        radius.append(a);
+    }
+
+    group_.transfer(group);
+    radius_.transfer(radius);
+    position_.transfer(position);
+}
+
+
+void Foam::fdmParticleCloud::readState()
+{
+    const fileName file =
+        mesh_.time().globalPath()/mesh_.time().timeName()/"particleState";
+    if (!isFile(file))
+    {
+        return;
+    }
+
+    Info<< "    continuing from " << file << nl;
+    IFstream is(file);
+    const dictionary state(is);
+
+    const label n = state.get<label>("nParticles");
+    if (n != size())
+    {
+        FatalIOErrorInFunction(state)
+            << file << " holds " << n << " particles but "
+            << dict_.name() << " lists " << size() << exit(FatalIOError);
+    }
+
+    position_ = state.get<pointField>("position");
+    U_ = state.get<List<vector>>("velocity");
+    Omega_ = state.get<List<vector>>("angularVelocity");
+    Uold_ = state.get<List<vector>>("previousVelocity");
+    force_ = state.get<List<vector>>("force");
+    torque_ = state.get<List<vector>>("torque");
+    solved_ = state.get<bool>("solved");
+    hasHistory_ = state.get<bool>("hasHistory");
+    firstSolveDone_ = solved_;
+}
+
+
+// ************************************************************************* //
