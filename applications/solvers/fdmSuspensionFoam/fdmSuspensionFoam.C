@@ -72,6 +72,8 @@ int main(int argc, char *argv[])
             << runTime.timeName() << nl << endl;
         #include "stokesSolve.H"
     }
+    // State at the start time: solved above or read from a restart
+    particles.writeTimeSeries();
 
     Info<< "\nStarting time loop\n" << endl;
 
@@ -87,6 +89,7 @@ int main(int argc, char *argv[])
 
         clockTime outputClock;
         runTime.write();
+        particles.writeTimeSeries();
         if (runTime.writeTime())
         {
             particles.writeState();

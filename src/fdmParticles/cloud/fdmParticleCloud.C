@@ -194,6 +194,7 @@ Foam::fdmParticleCloud::fdmParticleCloud(const fvMesh& mesh, const scalar nu)
     solved_(false),
     hasHistory_(false),
     firstSolveDone_(false),
+    timeSeriesInterval_(1),
     system_(0),
     timings_{0, 0, 0, 0},
     lastSolve_{0, 0, true},
@@ -248,6 +249,29 @@ Foam::fdmParticleCloud::fdmParticleCloud(const fvMesh& mesh, const scalar nu)
     moments_.setSize(size());
 
     readState();
+
+    timeSeriesInterval_ =
+        dict_.subOrEmptyDict("output").getOrDefault<label>
+        (
+            "timeSeriesInterval", 1
+        );
+    if (timeSeriesInterval_ < 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "output.timeSeriesInterval " << timeSeriesInterval_ << " in "
+            << dict_.name() << ": allowed values are integers >= 1"
+            << exit(FatalIOError);
+    }
+    timeSeries_.reset
+    (
+        new particleHDF5Writer
+        (
+            mesh.time().globalPath()/"postProcessing"/"particles.h5",
+            radius_,
+            group_,
+            mesh.time().value()
+        )
+    );
 
     Info<< "    " << size() << " particles in " << groups_.size()
         << " group(s); Delta = " << delta_ << ", radius/Delta from "

@@ -52,6 +52,19 @@ void Foam::fdmParticleCloud::writeState() const
 }
 
 
+void Foam::fdmParticleCloud::writeTimeSeries()
+{
+    if (empty() || mesh_.time().timeIndex() % timeSeriesInterval_ != 0)
+    {
+        return;
+    }
+    timeSeries_->append
+    (
+        mesh_.time().value(), position_, U_, Omega_, force_, torque_
+    );
+}
+
+
 void Foam::fdmParticleCloud::writeVTK() const
 {
     if (empty() || !Pstream::master())

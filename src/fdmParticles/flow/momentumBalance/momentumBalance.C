@@ -55,7 +55,7 @@ Foam::vector Foam::momentumBalance::wallForce
         const vectorField viscous
         (
             nu*U.boundaryField()[patchi].snGrad()*magSf
-          + (devT.boundaryField()[patchi] & Sf)
+          + (Sf & devT.boundaryField()[patchi])
         );
         F += sum(viscous - p.boundaryField()[patchi]*Sf);
     }

@@ -1,0 +1,32 @@
+#!/usr/bin/env python3
+"""Drag factor K of one periodic-array case (thesis 1, eqs 4.2, 4.6, 4.7).
+
+K = F / (6 pi eta a U_s),  F = V0 |grad P0| (held sphere) or the buoyant
+weight (settling sphere), U_s = <u> - U_particle along the flow.
+Usage: dragFactor.py caseDir L  -> prints "K phi K_Hasimoto"
+"""
+
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
+                                "python"))
+from fdmPost.particleCase import (hasimoto_K, momentum_balance,  # noqa: E402
+                                  particle_state)
+
+
+def drag_factor(case, L):
+    """K of the case's last time; force = V0 (|grad P0| = 1 or g = 1)."""
+    bal = momentum_balance(case)
+    t = bal["time"][-1]
+    state = particle_state(case, "%g" % t)
+    slip = bal["meanU"][-1, 0] - state["velocity"][0, 0]
+    force = L ** 3
+    return force / (6 * math.pi * abs(slip))
+
+
+if __name__ == "__main__":
+    case, L = sys.argv[1], float(sys.argv[2])
+    phi = 4 * math.pi / 3 / L ** 3
+    print("%.9g %.9g %.9g" % (drag_factor(case, L), phi, hasimoto_K(phi)))
