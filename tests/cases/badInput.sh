@@ -1,22 +1,26 @@
 #!/bin/bash
 # Case test: bad input stops the solver with a message naming the file and
-# the keyword.  Each variant starts from the valid planeChannel case.
+# the keyword.  Each variant starts from a valid case: planeChannel for the
+# flow dictionaries, shearedSphere for the particle input.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir badInput)
-cloneCase planeChannel "$work/mesh"
-( cd "$work/mesh" && runLogged blockMesh ) || exit 1
+for template in planeChannel shearedSphere
+do
+    cloneCase "$template" "$work/mesh-$template"
+    ( cd "$work/mesh-$template" && runLogged blockMesh ) || exit 1
+done
 
 failures=0
 
-# expectFatal variant file sed-expression keyword...
+# expectFatal variant file sed-expression keyword...   (uses $template)
 expectFatal()
 {
     local variant=$1 file=$2 edit=$3
     shift 3
     local dir="$work/$variant"
-    cloneCase planeChannel "$dir"
-    cp -r "$work/mesh/constant/polyMesh" "$dir/constant/"
+    cloneCase "$template" "$dir"
+    cp -r "$work/mesh-$template/constant/polyMesh" "$dir/constant/"
     sed -i "$edit" "$dir/$file"
 
     if (cd "$dir" && fdmSuspensionFoam > log.fdmSuspensionFoam 2>&1)
@@ -39,6 +43,7 @@ expectFatal()
     echo "  ok   $variant: stops naming $file and $*"
 }
 
+template=planeChannel
 expectFatal misspeltMeanPressureGradient constant/flowProperties \
     's/meanPressureGradient/meanPresureGradient/' meanPressureGradient
 expectFatal missingViscosity constant/transportProperties \
@@ -49,5 +54,25 @@ expectFatal negativeCorrectors system/fvSolution \
     's/nCorrectors .*$/nCorrectors -1;/' nCorrectors ">= 1"
 expectFatal missingRelaxation system/fvSolution \
     's/U               0.9;//' relaxationFactors "0 < U < 1"
+
+template=shearedSphere
+pp=constant/particleProperties
+expectFatal overlappingParticles $pp \
+    's/^    (pushed (5.05 0.03 4.97) 1)/&\n    (pushed (5.05 1.9 4.97) 1)/' \
+    overlapping "particles 0"
+expectFatal particleOutsideDomain $pp 's/(5.05 0.03 4.97)/(5.05 4.5 4.97)/' \
+    "Particle 0" "not inside the domain" "within \[-4"
+expectFatal meshTooCoarse $pp 's/(5.05 0.03 4.97) 1)/(5.05 0.03 4.97) 0.3)/' \
+    "too coarse" "1.5 cells"
+expectFatal unknownGroup $pp 's/(pushed (5.05/(pulled (5.05/' \
+    "group pulled" "defined groups"
+expectFatal badTranslation $pp 's/force (0 0 18.85);/translation moving;/' \
+    translation "free, fixed or a velocity vector"
+expectFatal unknownGroupKeyword $pp 's/force (0 0 18.85);/forse (0 0 1);/' \
+    "Unknown keyword forse" "allowed keywords"
+expectFatal missingLambdaTolerance $pp 's/lambdaTolerance .*;//' \
+    "'lambdaTolerance'"
+expectFatal missingFluidDensity constant/transportProperties 's/^rho .*$//' \
+    "'rho'"
 
 [ "$failures" -eq 0 ]

@@ -7,6 +7,24 @@
 #include "cyclicPolyPatch.H"
 #include "pairSearch.H"
 #include "constants.H"
+#include <sstream>
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A number with 6 significant digits for messages (the case's
+//  writePrecision would otherwise print round-off digits)
+Foam::word brief(const double x)
+{
+    std::ostringstream os;
+    os.precision(6);
+    os << x;
+    return Foam::word(os.str(), false);
+}
+
+} // namespace
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -99,8 +117,8 @@ void Foam::fdmParticleCloud::checkParticles() const
         {
             FatalIOErrorInFunction(dict_)
                 << "Particle " << p << " in " << file << " has radius " << a
-                << " = " << a/delta_ << " cells: the mesh (Delta = " << delta_
-                << ") is too coarse to resolve it." << nl
+                << " = " << brief(a/delta_) << " cells: the mesh (Delta = "
+                << brief(delta_) << ") is too coarse to resolve it." << nl
                 << "    At least " << minCellsPerRadius << " cells per radius"
                 << " are required; the method is calibrated at 5 (thesis 1,"
                 << " Delta = a1/5)." << exit(FatalIOError);
@@ -127,8 +145,10 @@ void Foam::fdmParticleCloud::checkParticles() const
                     << "Particle " << p << " in " << file << " at "
                     << position_[p] << " with radius " << a
                     << " is not inside the domain: along direction " << d
-                    << " it must lie within [" << lo + a << ", " << hi - a
-                    << "] (the domain spans [" << lo << ", " << hi << "])."
+                    << " it must lie within [" << brief(lo + a) << ", "
+                    << brief(hi - a)
+                    << "] (the domain spans [" << brief(lo) << ", "
+                    << brief(hi) << "])."
                     << exit(FatalIOError);
             }
         }
