@@ -1,0 +1,55 @@
+#!/bin/bash
+# Case test: a restart continues the same trajectory.  Three particles
+# (read with particlesFile, two groups, one heavy) in a sheared channel
+# move for 4 Adams-Bashforth steps; the same case stopped after 2 steps and
+# restarted from the written time must reach the same particle state and
+# the HDF5 series must hold each step once.  Checks in checkRestart.py.
+source "${0%/*}/caseTestFunctions"
+
+work=$(caseWorkDir restartContinuity)
+cloneCase shearedSphere "$work/straight"
+(
+    cd "$work/straight" || exit 1
+    # Smaller box 6 x 6 x 6, walls at -3 and 3 moving at -3 and 3
+    sed -i -e 's/^    (0 -5 0) .*$/    (0 -3 0) (6 -3 0) (6 3 0) (0 3 0)/' \
+        -e 's/^    (0 -5 10) .*$/    (0 -3 6) (6 -3 6) (6 3 6) (0 3 6)/' \
+        -e 's/(50 50 50)/(30 30 30)/' system/blockMeshDict
+    sed -i 's/uniform (-5 0 0)/uniform (-3 0 0)/; s/uniform (5 0 0)/uniform (3 0 0)/' 0/U
+    foamDictionary -entry particles -remove constant/particleProperties \
+        > /dev/null
+    foamDictionary -entry particlesFile -add '"particleList"' \
+        constant/particleProperties > /dev/null
+    foamDictionary -entry groups -set \
+        '{ light { } heavy { density 3; } }' \
+        constant/particleProperties > /dev/null
+    foamDictionary -entry gravity -add '(0 -1 0)' \
+        constant/particleProperties > /dev/null
+    foamDictionary -entry coupling.lambdaTolerance -set 1e-5 \
+        constant/particleProperties > /dev/null
+    cat > constant/particleList <<'LIST'
+// group  position          radius
+(
+    (light (1.55 0.52 1.47) 1)
+    (heavy (4.45 0.03 4.51) 1.2)
+    (light (3.02 -1.48 2.97) 1)
+)
+LIST
+    foamDictionary -entry deltaT -set 0.05 system/controlDict > /dev/null
+    foamDictionary -entry endTime -set 0.2 system/controlDict > /dev/null
+    runLogged blockMesh || exit 1
+) || exit 1
+
+cp -r "$work/straight" "$work/restarted"
+(cd "$work/straight" && runLogged fdmSuspensionFoam) || exit 1
+(
+    cd "$work/restarted" || exit 1
+    foamDictionary -entry endTime -set 0.1 system/controlDict > /dev/null
+    runLogged fdmSuspensionFoam || exit 1
+    foamDictionary -entry endTime -set 0.2 system/controlDict > /dev/null
+    foamDictionary -entry startFrom -set latestTime system/controlDict \
+        > /dev/null
+    mv log.fdmSuspensionFoam log.first
+    runLogged fdmSuspensionFoam
+) || exit 1
+
+"$FDM_PYTHON" "$caseTemplates/checkRestart.py" "$work"
