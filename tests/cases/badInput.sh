@@ -54,6 +54,9 @@ expectFatal negativeCorrectors system/fvSolution \
     's/nCorrectors .*$/nCorrectors -1;/' nCorrectors ">= 1"
 expectFatal missingRelaxation system/fvSolution \
     's/U               0.9;//' relaxationFactors "0 < U < 1"
+expectFatal unknownAcceleration system/fvSolution \
+    's/^ *nCorrectors .*$/&\n    acceleration fast;/' "acceleration fast" \
+    "none (thesis outer iteration) and anderson"
 
 template=shearedSphere
 pp=constant/particleProperties

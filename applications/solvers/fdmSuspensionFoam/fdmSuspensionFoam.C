@@ -38,6 +38,8 @@ Usage
 #include "fdmParticleCloud.H"
 #include "momentumBalance.H"
 #include "clockTime.H"
+#include "andersonAcceleration.H"
+#include "outerState.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

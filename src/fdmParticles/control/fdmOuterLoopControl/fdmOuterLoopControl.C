@@ -39,6 +39,30 @@ void Foam::fdmOuterLoopControl::read()
             << ": allowed values are >= 0" << exit(FatalIOError);
     }
 
+    const word acceleration = d.getOrDefault<word>("acceleration", "none");
+    if (acceleration == "none")
+    {
+        accelerationDepth_ = 0;
+    }
+    else if (acceleration == "anderson")
+    {
+        accelerationDepth_ = d.getOrDefault<label>("accelerationDepth", 8);
+        if (accelerationDepth_ < 1)
+        {
+            FatalIOErrorInFunction(d)
+                << "accelerationDepth " << accelerationDepth_ << " in "
+                << d.name() << ": allowed values are integers >= 1"
+                << exit(FatalIOError);
+        }
+    }
+    else
+    {
+        FatalIOErrorInFunction(d)
+            << "acceleration " << acceleration << " in " << d.name()
+            << ": allowed values are none (thesis outer iteration) and"
+            << " anderson" << exit(FatalIOError);
+    }
+
     const dictionary& solDict = mesh_.solutionDict();
     const bool relaxed = mesh_.relaxEquation("U");
     const scalar alpha = relaxed ? mesh_.equationRelaxationFactor("U") : 1;
@@ -69,6 +93,7 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
     nCorrectors_(2),
     nOuterCorrectors_(1),
     outerTolerance_(0),
+    accelerationDepth_(0),
     iteration_(0),
     changeU_(GREAT),
     residualU_(GREAT),

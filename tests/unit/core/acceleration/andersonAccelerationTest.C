@@ -1,0 +1,89 @@
+// Unit tests for Foam::fdm::andersonAcceleration
+
+#include "andersonAcceleration.H"
+
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace Foam;
+
+namespace
+{
+
+// Linear fixed-point map G(x) = x - omega (A x - b), A = tridiag(-1, 2, -1)
+// (1D Laplacian, n points): plain iteration contracts by
+// 1 - omega lambda_min(A), close to 1 for large n -- the situation of the
+// under-relaxed outer loop.
+void applyMap(const scalarField& x, scalarField& g, const scalar omega)
+{
+    const label n = x.size();
+    g.setSize(n);
+    forAll(x, i)
+    {
+        const scalar left = i > 0 ? x[i - 1] : 0;
+        const scalar right = i < n - 1 ? x[i + 1] : 0;
+        const scalar Ax = 2*x[i] - left - right;
+        g[i] = x[i] - omega*(Ax - 1.0);
+    }
+}
+
+// Exact solution of A x = 1 with zero end values: x_i = (i+1)(n-i)/2
+scalar errorOf(const scalarField& x)
+{
+    const label n = x.size();
+    scalar e = 0;
+    forAll(x, i)
+    {
+        e = max(e, mag(x[i] - 0.5*(i + 1)*(n - i)));
+    }
+    return e;
+}
+
+label iterationsToConverge(const label depth, const label n)
+{
+    fdm::andersonAcceleration aa(depth);
+    scalarField x(n, Zero), g;
+    for (label k = 1; k <= 20000; ++k)
+    {
+        applyMap(x, g, 0.45);
+        if (depth > 0)
+        {
+            aa.update(x, g);
+        }
+        x = g;
+        if (errorOf(x) < 1e-8*0.125*n*n)
+        {
+            return k;
+        }
+    }
+    return -1;
+}
+
+} // namespace
+
+
+TEST(andersonAcceleration, reachesTheFixedPointOfASlowLinearMap)
+{
+    // Reference: the exact solution of the linear system.  Plain
+    // iteration needs O(n^2 log(1/tol)) steps, Anderson far fewer.
+    const label n = 40;
+    const label plain = iterationsToConverge(0, n);
+    const label accelerated = iterationsToConverge(8, n);
+    ASSERT_GT(plain, 0);
+    ASSERT_GT(accelerated, 0);
+    EXPECT_LT(accelerated, plain/10);
+}
+
+
+TEST(andersonAcceleration, firstUpdateLeavesThePlainIterate)
+{
+    fdm::andersonAcceleration aa(3);
+    const scalarField x(4, 1.0);
+    scalarField g(4, 2.0);
+    aa.update(x, g);
+    for (const scalar v : g)
+    {
+        EXPECT_DOUBLE_EQ(v, 2.0);
+    }
+    EXPECT_EQ(aa.size(), 0);
+}
