@@ -33,18 +33,12 @@ sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "validation",
                                 "periodicArrayDrag"))
 from dragFactor import drag_factor  # noqa: E402
 from fdmPost.particleCase import hasimoto_K, momentum_balance  # noqa: E402
+from fdmPost.checks import Checks  # noqa: E402
 
 work = sys.argv[1]
 L = 8.0
-failures = []
-
-
-def check(name, value, tol):
-    ok = value <= tol
-    print("%-55s %.3e (tolerance %.1e) %s" % (name, value, tol,
-                                              "ok" if ok else "FAILED"))
-    if not ok:
-        failures.append(name)
+checks = Checks()
+check = checks.check
 
 
 KH = hasimoto_K(4 * math.pi / 3 / L ** 3)
@@ -77,4 +71,4 @@ with h5py.File(os.path.join(work, "accelerated", "postProcessing",
     check("HDF5 position shape (N = 1)",
           float(f["position"].shape != (2, 1, 3)), 0)
 
-sys.exit(1 if failures else 0)
+checks.finish()

@@ -18,17 +18,11 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
 from fdmPost.particleCase import particle_state  # noqa: E402
+from fdmPost.checks import Checks  # noqa: E402
 
 work = sys.argv[1]
-failures = []
-
-
-def check(name, value, tol):
-    ok = value <= tol
-    print("%-50s %.3e (tolerance %.1e) %s" % (name, value, tol,
-                                              "ok" if ok else "FAILED"))
-    if not ok:
-        failures.append(name)
+checks = Checks()
+check = checks.check
 
 
 a = particle_state(os.path.join(work, "straight"), "0.2")
@@ -51,4 +45,4 @@ for name in ["straight", "restarted"]:
           float(len(t) != 5) + np.abs(t - 0.05 * np.arange(len(t))).max(),
           1e-12)
 
-sys.exit(1 if failures else 0)
+checks.finish()

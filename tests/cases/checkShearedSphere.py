@@ -32,20 +32,14 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
 from fdmPost.particleCase import momentum_balance, particle_state  # noqa
+from fdmPost.checks import Checks  # noqa: E402
 
 work = sys.argv[1]
 F = 18.85
 OMEGA_TOL = 0.015
 UX_TOL = 0.01
-failures = []
-
-
-def check(name, value, tol):
-    ok = value <= tol
-    print("%-50s %.3e (tolerance %.1e) %s" % (name, value, tol,
-                                              "ok" if ok else "FAILED"))
-    if not ok:
-        failures.append(name)
+checks = Checks()
+check = checks.check
 
 
 bal = momentum_balance(work)
@@ -64,4 +58,4 @@ check("|Omega_z + 1/2| / (1/2)", abs(W[2] + 0.5) / 0.5, OMEGA_TOL)
 check("|Omega_x|, |Omega_y| / (1/2)", max(abs(W[0]), abs(W[1])) / 0.5, 0.02)
 check("|U_x - y_p| / (shear rate a)", abs(U[0] - x[1]), UX_TOL)
 
-sys.exit(1 if failures else 0)
+checks.finish()

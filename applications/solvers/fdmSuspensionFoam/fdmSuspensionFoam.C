@@ -64,6 +64,7 @@ int main(int argc, char *argv[])
     clockTime flowClock;
     scalar flowSeconds = 0;
     scalar outputSeconds = 0;
+    scalar accelerationSeconds = 0;
     label nOuterTotal = 0;
     const label startTimeIndex = runTime.timeIndex();
 

@@ -1,0 +1,24 @@
+"""Pass/fail bookkeeping shared by the case-test checkers: every check
+prints its measured value with its tolerance."""
+
+import sys
+
+
+class Checks:
+    """Collect checks; finish() exits 1 if any failed."""
+
+    def __init__(self, width=55):
+        self.width = width
+        self.failures = []
+
+    def check(self, name, value, tol):
+        """Pass when value <= tol."""
+        ok = value <= tol
+        print("%-*s %.3e (tolerance %.1e) %s"
+              % (self.width, name, value, tol, "ok" if ok else "FAILED"))
+        if not ok:
+            self.failures.append(name)
+        return ok
+
+    def finish(self):
+        sys.exit(1 if self.failures else 0)
