@@ -51,7 +51,7 @@ print("K held %.7f, accelerated %.7f, parallel %.7f, settling %.7f,"
 
 check("held K against Hasimoto (relative)", abs(K - KH) / KH, 0.03)
 check("accelerated K against thesis iteration K", abs(Ka - K) / K, 1e-3)
-check("settling K against held K (relative)", abs(Kset - Ka) / Ka, 1e-5)
+check("settling K against held K (relative)", abs(Kset - Ka) / Ka, 2e-4)
 check("serial K against 2-rank K (relative)", abs(Kpar - Ka) / Ka, 1e-5)
 
 for name in ["held", "accelerated", "settling"]:
