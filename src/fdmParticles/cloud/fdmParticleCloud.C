@@ -5,6 +5,7 @@
 
 #include "fdmParticleCloud.H"
 #include "cyclicPolyPatch.H"
+#include "processorCyclicPolyPatch.H"
 #include "pairSearch.H"
 #include "constants.H"
 #include <sstream>
@@ -65,25 +66,47 @@ Foam::fdm::periodicBox Foam::fdmParticleCloud::meshBox() const
     const boundBox bounds(mesh_.points(), true);
     FixedList<bool, 3> periodic(false);
 
-    for (const polyPatch& pp : mesh_.boundaryMesh())
+    // Face areas of each cyclic patch, including the parts that became
+    // processorCyclic patches after decomposition (a rank may hold a
+    // cyclic patch with no faces at all)
+    const polyBoundaryMesh& patches = mesh_.boundaryMesh();
+    List<vector> area(patches.size(), Zero);
+    for (const polyPatch& pp : patches)
+    {
+        label cyclicID = -1;
+        if (isA<cyclicPolyPatch>(pp))
+        {
+            cyclicID = pp.index();
+        }
+        else if (isA<processorCyclicPolyPatch>(pp))
+        {
+            cyclicID =
+                refCast<const processorCyclicPolyPatch>(pp).referPatchID();
+        }
+        if (cyclicID >= 0)
+        {
+            for (const vector& Sf : pp.faceAreas())
+            {
+                area[cyclicID] += cmptMag(Sf);
+            }
+        }
+    }
+
+    for (const polyPatch& pp : patches)
     {
         if (!isA<cyclicPolyPatch>(pp))
         {
             continue;
         }
-        vector area(Zero);
-        for (const vector& Sf : pp.faceAreas())
-        {
-            area += cmptMag(Sf);
-        }
-        reduce(area, sumOp<vector>());
+        vector a = area[pp.index()];
+        reduce(a, sumOp<vector>());
 
-        const direction axis = findMax(area);
-        if (cmptMax(area) > 0)
+        const direction axis = findMax(a);
+        if (cmptMax(a) > 0)
         {
             for (direction d = 0; d < 3; ++d)
             {
-                if (d != axis && area[d] > 1e-9*area[axis])
+                if (d != axis && a[d] > 1e-9*a[axis])
                 {
                     FatalErrorInFunction
                         << "Cyclic patch " << pp.name() << " is not normal to"
