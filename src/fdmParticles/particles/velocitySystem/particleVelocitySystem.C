@@ -181,6 +181,13 @@ Foam::fdm::particleVelocitySystem::solve
             << abort(FatalError);
     }
 
+    // Eigen counts the iterations completed before its convergence test,
+    // so a solve converging in its first iteration reports 0; count the
+    // iterations actually done (0 only if the guess already satisfies the
+    // tolerance)
+    const bool guessConverged =
+        (b - A*x).squaredNorm() <= sqr(tolerance)*b.squaredNorm();
+
     x = cg.solveWithGuess(b, x);
 
     for (label i = 0; i < nParticles_; ++i)
@@ -193,7 +200,8 @@ Foam::fdm::particleVelocitySystem::solve
     }
 
     solveInfo info;
-    info.iterations = cg.iterations();
+    info.iterations =
+        guessConverged ? 0 : min(label(cg.iterations()) + 1, maxIterations);
     info.relativeResidual = cg.error();
     info.converged = (cg.info() == Eigen::Success);
     return info;

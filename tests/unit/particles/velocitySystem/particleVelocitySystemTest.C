@@ -69,6 +69,7 @@ TEST(particleVelocitySystem, recoversKnownVelocitiesOfACoupledSystem)
     List<vector> U(3, Zero), W(3, Zero);
     const auto info = sys.solve(1e-12, 100, U, W);
     EXPECT_TRUE(info.converged);
+    EXPECT_GT(info.iterations, 0);
     forAll(U, i)
     {
         EXPECT_LT(mag(U[i] - Uref[i]), 1e-9);
@@ -106,4 +107,8 @@ TEST(particleVelocitySystem, eliminatesPrescribedVelocities)
     EXPECT_LT(mag(U[0] - Uref[0]), 1e-14);
     EXPECT_LT(mag(U[1] - Uref[1]), 1e-9);
     EXPECT_LT(mag(W[1] - Wref[1]), 1e-9);
+
+    // Solving again from the solution does no iteration
+    const auto again = sys.solve(1e-12, 100, U, W);
+    EXPECT_EQ(again.iterations, 0);
 }
