@@ -12,16 +12,22 @@ import sys
 
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
-from fdmPost.particleCase import (hasimoto_K, momentum_balance,  # noqa: E402
-                                  particle_state)
+import h5py  # noqa: E402
+from fdmPost.particleCase import hasimoto_K, momentum_balance  # noqa: E402
 
 
 def drag_factor(case, L):
-    """K of the case's last time; force = V0 (|grad P0| = 1 or g = 1)."""
+    """K of the case's last solve; force = V0 (|grad P0| = 1 or g = 1).
+    Mean velocity from the momentum-balance file, particle velocity from
+    the HDF5 series (both written after every solve)."""
     bal = momentum_balance(case)
-    t = bal["time"][-1]
-    state = particle_state(case, "%g" % t)
-    slip = bal["meanU"][-1, 0] - state["velocity"][0, 0]
+    with h5py.File(os.path.join(case, "postProcessing", "particles.h5"),
+                   "r") as f:
+        t, Up = f["time"][-1], f["velocity"][-1, 0]
+    if abs(t - bal["time"][-1]) > 1e-12 * (1 + abs(t)):
+        raise RuntimeError("%s: last HDF5 time %g differs from the last"
+                           " balance time %g" % (case, t, bal["time"][-1]))
+    slip = bal["meanU"][-1, 0] - Up[0]
     force = L ** 3
     return force / (6 * math.pi * abs(slip))
 
