@@ -39,6 +39,7 @@ Usage
 #include "momentumBalance.H"
 #include "clockTime.H"
 #include "andersonAcceleration.H"
+#include "sumOverRanks.H"
 #include "outerState.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //

@@ -11,26 +11,7 @@ Description
 #include "fdmParticleCloud.H"
 #include "adamsBashforth.H"
 #include "clockTime.H"
-
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
-
-namespace
-{
-
-using namespace Foam;
-
-//- Sum a list over all ranks, leaving the result on every rank
-void sumOverRanks(List<scalar>& values)
-{
-    if (Pstream::parRun())
-    {
-        Pstream::listCombineGather(values, plusEqOp<scalar>());
-        Pstream::listCombineScatter(values);
-    }
-}
-
-} // namespace
-
+#include "sumOverRanks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -125,7 +106,7 @@ void Foam::fdmParticleCloud::buildStencils()
         for (direction d = 0; d < 3; ++d) { s[1 + d] = mp.firstMoment[d]; }
         for (direction d = 0; d < 6; ++d) { s[4 + d] = mp.inertia[d]; }
     }
-    sumOverRanks(m);
+    fdm::sumOverRanks(m);
     forAll(position_, p)
     {
         const scalar* s = &m[10*p];
@@ -262,7 +243,7 @@ Foam::scalar Foam::fdmParticleCloud::correct
             sums[12*p + 9 + d] = tl[d];
         }
     }
-    sumOverRanks(sums);
+    fdm::sumOverRanks(sums);
     timings_.integrals += clock.timeIncrement();
 
     // Particle system (eqs 2.43-2.44, smoothed form 2.53), per unit fluid
@@ -382,7 +363,7 @@ void Foam::fdmParticleCloud::finishSolve(const volVectorField& lambda)
             sums[6*p + 3 + d] = t[d];
         }
     }
-    sumOverRanks(sums);
+    fdm::sumOverRanks(sums);
     forAll(position_, p)
     {
         force_[p] = -rhoFluid_*vector(sums[6*p], sums[6*p + 1], sums[6*p + 2]);
