@@ -209,7 +209,11 @@ Foam::vector Foam::fdmParticleCloud::bodyForce(const label p) const
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fdmParticleCloud::fdmParticleCloud(const fvMesh& mesh, const scalar nu)
+Foam::fdmParticleCloud::fdmParticleCloud
+(
+    const fvMesh& mesh,
+    const dictionary& transport
+)
 :
     mesh_(mesh),
     dict_
@@ -224,7 +228,7 @@ Foam::fdmParticleCloud::fdmParticleCloud(const fvMesh& mesh, const scalar nu)
         )
     ),
     rhoFluid_(1),
-    nu_(nu),
+    nu_(transport.get<scalar>("nu")),
     gravity_(Zero),
     delta_(0),
     indicator_(5, 0.3, 1),
@@ -252,18 +256,6 @@ Foam::fdmParticleCloud::fdmParticleCloud(const fvMesh& mesh, const scalar nu)
 
     Info<< "Reading particleProperties" << nl;
 
-    const IOdictionary transport
-    (
-        IOobject
-        (
-            "transportProperties",
-            mesh.time().constant(),
-            mesh,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
     rhoFluid_ = transport.get<scalar>("rho");
     if (!(rhoFluid_ > 0))
     {

@@ -375,20 +375,16 @@ void Foam::fdmParticleCloud::finishSolve(const volVectorField& lambda)
 }
 
 
-Foam::vector Foam::fdmParticleCloud::sumParticleLambdaIntegrals
-(
-    const volVectorField& lambda
-) const
+Foam::vector Foam::fdmParticleCloud::sumParticleLambdaIntegrals() const
 {
-    const scalarField& V = mesh_.V();
-    const vectorField& l = lambda.primitiveField();
+    // finishSolve stored F_p = -rho_f * (J_lambda-weighted integral of
+    // lambda), already summed over ranks
     vector sum(Zero);
-    forAll(stencilCell_, e)
+    for (const vector& f : force_)
     {
-        const label c = stencilCell_[e];
-        sum += (stencilJlambda_[e]*V[c])*l[c];
+        sum -= f;
     }
-    return returnReduce(sum, sumOp<vector>());
+    return sum/rhoFluid_;
 }
 
 
