@@ -281,6 +281,8 @@ Foam::fdmParticleCloud::fdmParticleCloud
     Uold_.setSize(size(), Zero);
     force_.setSize(size(), Zero);
     torque_.setSize(size(), Zero);
+    stresslet_.setSize(size(), Zero);
+    dipoleTrace_.setSize(size(), Zero);
     moments_.setSize(size());
 
     readState();

@@ -335,40 +335,76 @@ Foam::scalar Foam::fdmParticleCloud::correct
 }
 
 
-void Foam::fdmParticleCloud::finishSolve(const volVectorField& lambda)
+void Foam::fdmParticleCloud::finishSolve
+(
+    const volVectorField& lambda,
+    const volScalarField& p
+)
 {
     if (empty())
     {
         return;
     }
 
-    // Hydrodynamic force and torque received from the fluid (eq 2.6 without
-    // inertia): minus the J_lambda-weighted integrals of rho_f lambda
+    // The force dipole of particle n (eq 2.66, no inertia):
+    //     D = -rho_f int J_lambda lambda (x) r dV - rho_f int J_u p dV I
+    // its antisymmetric part is the torque, its symmetric traceless part
+    // the stresslet and its trace s (eq 2.67).  The force is minus the
+    // J_lambda-weighted integral of rho_f lambda (eq 2.6).  The pressure is
+    // taken relative to its domain mean (thesis 2.7.2) and weighted with
+    // J_u, the indicator of the particle volume where sigma = -p I.
     const scalarField& V = mesh_.V();
     const vectorField& l = lambda.primitiveField();
-    List<scalar> sums(6*size(), Zero);
-    forAll(position_, p)
+    const scalarField& pc = p.primitiveField();
+    const scalar pMean = gSum(pc*V)/gSum(V);
+
+    // Per particle: force (3), lambda (x) r (9), pressure integral (1)
+    const label nSum = 13;
+    List<scalar> sums(nSum*size(), Zero);
+    forAll(position_, n)
     {
-        vector f(Zero), t(Zero);
-        for (label e = stencilStart_[p]; e < stencilStart_[p + 1]; ++e)
+        vector f(Zero);
+        tensor moment(Zero);
+        scalar pressure = 0;
+        for (label e = stencilStart_[n]; e < stencilStart_[n + 1]; ++e)
         {
             const label c = stencilCell_[e];
             const vector w = (stencilJlambda_[e]*V[c])*l[c];
             f += w;
-            t += stencilOffset_[e] ^ w;
+            moment += w*stencilOffset_[e];
+            pressure += stencilJu_[e]*V[c]*(pc[c] - pMean);
         }
+        scalar* s = &sums[nSum*n];
         for (direction d = 0; d < 3; ++d)
         {
-            sums[6*p + d] = f[d];
-            sums[6*p + 3 + d] = t[d];
+            s[d] = f[d];
         }
+        for (direction d = 0; d < 9; ++d)
+        {
+            s[3 + d] = moment[d];
+        }
+        s[12] = pressure;
     }
     fdm::sumOverRanks(sums);
-    forAll(position_, p)
+    forAll(position_, n)
     {
-        force_[p] = -rhoFluid_*vector(sums[6*p], sums[6*p + 1], sums[6*p + 2]);
-        torque_[p] =
-            -rhoFluid_*vector(sums[6*p + 3], sums[6*p + 4], sums[6*p + 5]);
+        const scalar* s = &sums[nSum*n];
+        force_[n] = -rhoFluid_*vector(s[0], s[1], s[2]);
+        const tensor D =
+            -rhoFluid_
+           *(
+                tensor(s[3], s[4], s[5], s[6], s[7], s[8], s[9], s[10], s[11])
+              + s[12]*tensor::I
+            );
+        // T = int r x (sigma n) dS: epsilon_ijk D_kj with D_kj = f_k r_j
+        torque_[n] = vector
+        (
+            D.zy() - D.yz(),
+            D.xz() - D.zx(),
+            D.yx() - D.xy()
+        );
+        stresslet_[n] = dev(symm(D));
+        dipoleTrace_[n] = tr(D);
     }
 
     firstSolveDone_ = true;

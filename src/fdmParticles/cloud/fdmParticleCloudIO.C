@@ -48,6 +48,8 @@ void Foam::fdmParticleCloud::writeState() const
     os.writeEntry("previousVelocity", Uold_);
     os.writeEntry("force", force_);
     os.writeEntry("torque", torque_);
+    os.writeEntry("stresslet", stresslet_);
+    os.writeEntry("dipoleTrace", dipoleTrace_);
     IOobject::writeEndDivider(os);
 }
 
@@ -60,7 +62,8 @@ void Foam::fdmParticleCloud::writeTimeSeries()
     }
     timeSeries_->append
     (
-        mesh_.time().value(), position_, U_, Omega_, force_, torque_
+        mesh_.time().value(), position_, U_, Omega_, force_, torque_,
+        stresslet_, dipoleTrace_
     );
 }
 

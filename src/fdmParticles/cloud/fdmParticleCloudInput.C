@@ -249,6 +249,8 @@ void Foam::fdmParticleCloud::readState()
     Uold_ = state.get<List<vector>>("previousVelocity");
     force_ = state.get<List<vector>>("force");
     torque_ = state.get<List<vector>>("torque");
+    state.readIfPresent("stresslet", stresslet_);
+    state.readIfPresent("dipoleTrace", dipoleTrace_);
     solved_ = state.get<bool>("solved");
     hasHistory_ = state.get<bool>("hasHistory");
     firstSolveDone_ = solved_;

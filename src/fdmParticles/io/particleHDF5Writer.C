@@ -89,8 +89,26 @@ void truncateSeries(hid_t file, const char* name, const hsize_t n)
     H5Dclose(ds);
 }
 
-const char* seriesNames[] =
-    {"position", "velocity", "angularVelocity", "force", "torque"};
+//- The per-record series and the shape of one record per particle:
+//  vectors (3), the stresslet as symmTensor components xx xy xz yy yz zz
+//  (6) and the trace of the force dipole (scalar)
+struct seriesShape
+{
+    const char* name;
+    hsize_t components;
+};
+
+const seriesShape series[] =
+{
+    {"position", 3}, {"velocity", 3}, {"angularVelocity", 3},
+    {"force", 3}, {"torque", 3}, {"stresslet", 6}, {"dipoleTrace", 1}
+};
+
+std::vector<hsize_t> recordShape(const hsize_t n, const seriesShape& s)
+{
+    return s.components == 1
+        ? std::vector<hsize_t>{n} : std::vector<hsize_t>{n, s.components};
+}
 
 } // namespace
 
@@ -141,9 +159,25 @@ Foam::particleHDF5Writer::particleHDF5Writer
             ++keep;
         }
         truncateSeries(f, "time", keep);
-        for (const char* name : seriesNames)
+        for (const seriesShape& s : series)
         {
-            truncateSeries(f, name, keep);
+            if (H5Lexists(f, s.name, H5P_DEFAULT) > 0)
+            {
+                truncateSeries(f, s.name, keep);
+            }
+            else if (keep == 0)
+            {
+                // A file from an older version without this series
+                createSeries(f, s.name, recordShape(nParticles_, s));
+            }
+            else
+            {
+                FatalErrorInFunction
+                    << path << " has records but no series '" << s.name
+                    << "' (written by an older version): move it away to "
+                    << "start a new series"
+                    << exit(FatalError);
+            }
         }
         return;
     }
@@ -174,9 +208,9 @@ Foam::particleHDF5Writer::particleHDF5Writer
     H5Sclose(space);
 
     createSeries(f, "time", {});
-    for (const char* name : seriesNames)
+    for (const seriesShape& s : series)
     {
-        createSeries(f, name, {n, 3});
+        createSeries(f, s.name, recordShape(n, s));
     }
 }
 
@@ -213,7 +247,9 @@ void Foam::particleHDF5Writer::append
     const List<vector>& velocity,
     const List<vector>& angularVelocity,
     const List<vector>& force,
-    const List<vector>& torque
+    const List<vector>& torque,
+    const List<symmTensor>& stresslet,
+    const List<scalar>& dipoleTrace
 )
 {
     if (file_ < 0)
@@ -226,6 +262,10 @@ void Foam::particleHDF5Writer::append
     appendVectors("angularVelocity", angularVelocity);
     appendVectors("force", force);
     appendVectors("torque", torque);
+    // Foam::symmTensor is six contiguous doubles (xx xy xz yy yz zz)
+    appendRecord(hid_t(file_), "stresslet",
+        reinterpret_cast<const double*>(stresslet.cdata()));
+    appendRecord(hid_t(file_), "dipoleTrace", dipoleTrace.cdata());
     H5Fflush(hid_t(file_), H5F_SCOPE_LOCAL);
 }
 

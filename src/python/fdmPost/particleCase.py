@@ -12,33 +12,42 @@ import re
 import numpy as np
 
 
-def _vector_list(text, key):
-    """Parse 'key N ( (x y z) ... );' from an OpenFOAM dictionary text."""
+def _list(text, key, width):
+    """Parse 'key N ( (c1 .. cwidth) ... );' (width > 1) or 'key N ( s ...
+    );' (width 1) from an OpenFOAM dictionary text; also the uniform short
+    form 'key N{value};'.  Returns an N x width (or N) array."""
+    m = re.search(r"^%s\s+(\d+)\s*\{\s*\(?([^()}]*)\)?\s*\}\s*;" % key,
+                  text, re.M)
+    if m is not None:
+        n = int(m.group(1))
+        value = np.array(m.group(2).split(), float)
+        return np.tile(value, (n, 1)) if width > 1 else np.full(n, value[0])
     m = re.search(r"^%s\s+(\d+)\s*\((.*?)\)\s*;" % key, text, re.S | re.M)
     if m is None:
-        # Uniform short form 'key N{(x y z)};'
-        m = re.search(r"^%s\s+(\d+)\s*\{\s*\(([^)]*)\)\s*\}\s*;" % key,
-                      text, re.M)
-        if m is None:
-            raise KeyError("%s not found" % key)
-        n = int(m.group(1))
-        return np.tile(np.array(m.group(2).split(), float), (n, 1))
+        raise KeyError("%s not found" % key)
     n = int(m.group(1))
-    values = np.array(re.findall(r"\(([^()]*)\)", m.group(2) + ")"),
-                      dtype=object)
-    out = np.array([v.split() for v in values[:n]], float)
-    return out.reshape(n, 3)
+    if width == 1:
+        return np.array(m.group(2).split()[:n], float)
+    values = re.findall(r"\(([^()]*)\)", m.group(2) + ")")
+    return np.array([v.split() for v in values[:n]], float).reshape(n, width)
 
 
 def particle_state(case, time):
-    """Dictionary of arrays: position, velocity, angularVelocity, force,
-    torque (N x 3)."""
+    """Dictionary of arrays: position, velocity, angularVelocity,
+    previousVelocity, force, torque (N x 3), and when present stresslet
+    (N x 6: xx xy xz yy yz zz) and dipoleTrace (N)."""
     path = os.path.join(case, str(time), "particleState")
     with open(path) as f:
         text = f.read()
     keys = ["position", "velocity", "angularVelocity", "previousVelocity",
             "force", "torque"]
-    return {k: _vector_list(text, k) for k in keys}
+    state = {k: _list(text, k, 3) for k in keys}
+    for k, width in (("stresslet", 6), ("dipoleTrace", 1)):
+        try:
+            state[k] = _list(text, k, width)
+        except KeyError:
+            pass
+    return state
 
 
 def momentum_balance(case):
