@@ -1,0 +1,340 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "resistanceTable.H"
+#include "IFstream.H"
+#include "error.H"
+
+#include <algorithm>
+#include <cmath>
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+constexpr Foam::scalar Foam::fdm::resistanceTable::defaultXMin;
+
+const Foam::wordList Foam::fdm::resistanceTable::pairFunctionNames
+({
+    "XA21", "YA21", "YB21", "XC21", "YC11",
+    "XG11", "YG11", "YH21", "XP12", "XP21"
+});
+
+const Foam::wordList Foam::fdm::resistanceTable::wallFunctionNames
+({
+    "XA", "YA", "YB", "XC", "YC", "XG", "XP"
+});
+
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::scalar Foam::fdm::resistanceTable::defaultCutoff(const word& name)
+{
+    // Thesis section 3.2: X functions for gap <= 0.3, Y functions <= 0.15
+    return (!name.empty() && name[0] == 'Y') ? 0.15 : 0.3;
+}
+
+
+Foam::label Foam::fdm::resistanceTable::lengthPower(const word& name)
+{
+    // Force ~ eta a U (A), torque/stresslet ~ eta a^2 U (B, G, P),
+    // torque/stresslet ~ eta a^3 Omega (C, H)
+    const char c = name.size() > 1 ? name[1] : ' ';
+    switch (c)
+    {
+        case 'A': return 1;
+        case 'B': case 'G': case 'P': return 2;
+        case 'C': case 'H': return 3;
+    }
+
+    FatalErrorInFunction
+        << "Unknown resistance function name " << name
+        << abort(FatalError);
+    return 0;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdm::resistanceTable::resistanceTable
+(
+    const dictionary& dict,
+    const scalar xMin
+)
+:
+    name_(dict.name()),
+    pair_(true),
+    lambda_(0),
+    xMin_(xMin)
+{
+    const word kind(dict.get<word>("kind"));
+    if (kind == "pair")
+    {
+        pair_ = true;
+    }
+    else if (kind == "wall")
+    {
+        pair_ = false;
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "Resistance table " << name_ << ": kind " << kind
+            << " is neither pair nor wall" << exit(FatalIOError);
+    }
+
+    const word gapVariable(dict.get<word>("gapVariable"));
+    const word expected(pair_ ? "xi" : "epsilon");
+    if (gapVariable != expected)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Resistance table " << name_ << ": gapVariable "
+            << gapVariable << " for kind " << kind << ", expected "
+            << expected << exit(FatalIOError);
+    }
+
+    if (pair_)
+    {
+        lambda_ = dict.get<scalar>("lambda");
+        if (lambda_ <= 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "Resistance table " << name_ << ": lambda = " << lambda_
+                << " must be positive" << exit(FatalIOError);
+        }
+    }
+
+    if (xMin_ <= 0)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Resistance table " << name_ << ": gap floor xMin = " << xMin_
+            << " must be positive (the singular terms diverge at 0)"
+            << exit(FatalIOError);
+    }
+
+    dict.readEntry("gap", gap_);
+    if (gap_.size() < 2)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Resistance table " << name_ << ": keyword gap needs at least"
+            << " two points, got " << gap_.size() << exit(FatalIOError);
+    }
+    for (label i = 1; i < gap_.size(); ++i)
+    {
+        if (!(gap_[i] > gap_[i-1]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "Resistance table " << name_ << ": keyword gap is not"
+                << " strictly increasing at index " << i << " ("
+                << gap_[i-1] << ", " << gap_[i] << ")" << exit(FatalIOError);
+        }
+    }
+    if (gap_.last() < xMin_)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Resistance table " << name_ << ": last gap " << gap_.last()
+            << " is below the gap floor " << xMin_ << exit(FatalIOError);
+    }
+
+    const dictionary* funcsPtr = dict.findDict("functions");
+    if (!funcsPtr)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Resistance table " << name_ << ": missing sub-dictionary"
+            << " functions" << exit(FatalIOError);
+    }
+    const dictionary& funcs = *funcsPtr;
+
+    const wordList& names = pair_ ? pairFunctionNames : wallFunctionNames;
+    singular_.setSize(names.size());
+    remainder_.setSize(names.size());
+    cutoff_.setSize(names.size());
+
+    forAll(names, fi)
+    {
+        const word& fn = names[fi];
+        const dictionary* fPtr = funcs.findDict(fn);
+        if (!fPtr)
+        {
+            FatalIOErrorInFunction(funcs)
+                << "Resistance table " << name_ << ": missing function "
+                << fn << " (a " << kind << " table needs " << names << ")"
+                << exit(FatalIOError);
+        }
+        const dictionary& fd = *fPtr;
+
+        const scalarList g(fd.get<scalarList>("singular"));
+        if (g.size() != 3)
+        {
+            FatalIOErrorInFunction(fd)
+                << "Resistance table " << name_ << ": " << fn
+                << "/singular needs 3 coefficients (1/x, ln(1/x),"
+                << " x ln(1/x)), got " << g.size() << exit(FatalIOError);
+        }
+        for (label k = 0; k < 3; ++k)
+        {
+            singular_[fi][k] = g[k];
+        }
+
+        fd.readEntry("remainder", remainder_[fi]);
+        if (remainder_[fi].size() != gap_.size())
+        {
+            FatalIOErrorInFunction(fd)
+                << "Resistance table " << name_ << ": " << fn
+                << "/remainder has " << remainder_[fi].size()
+                << " values but gap has " << gap_.size()
+                << exit(FatalIOError);
+        }
+
+        cutoff_[fi] = fd.getOrDefault<scalar>("cutoff", defaultCutoff(fn));
+        if (cutoff_[fi] <= 0)
+        {
+            FatalIOErrorInFunction(fd)
+                << "Resistance table " << name_ << ": " << fn
+                << "/cutoff = " << cutoff_[fi] << " must be positive"
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+Foam::fdm::resistanceTable Foam::fdm::resistanceTable::read
+(
+    const fileName& file,
+    const scalar xMin
+)
+{
+    IFstream is(file);
+    if (!is.good())
+    {
+        FatalErrorInFunction
+            << "Cannot open resistance table " << file
+            << exit(FatalError);
+    }
+    const dictionary dict(is);
+    return resistanceTable(dict, xMin);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::fdm::resistanceTable::index(const word& name) const
+{
+    const wordList& names = pair_ ? pairFunctionNames : wallFunctionNames;
+    forAll(names, fi)
+    {
+        if (names[fi] == name)
+        {
+            return fi;
+        }
+    }
+
+    FatalErrorInFunction
+        << "Resistance table " << name_ << " has no function " << name
+        << "; available: " << names << exit(FatalError);
+    return -1;
+}
+
+
+Foam::scalar Foam::fdm::resistanceTable::cutoff(const word& name) const
+{
+    return cutoff_[index(name)];
+}
+
+
+Foam::scalar Foam::fdm::resistanceTable::value
+(
+    const word& name,
+    const scalar x,
+    const scalar a1
+) const
+{
+    const label fi = index(name);
+
+    // Switched off beyond the cut-off (the FDM resolves the interaction)
+    if (x > cutoff_[fi])
+    {
+        return 0;
+    }
+
+    const scalar xc = min(max(x, xMin_), gap_.last());
+
+    // Singular part, thesis B.1/B.2 forms
+    const FixedList<scalar, 3>& g = singular_[fi];
+    const scalar lnInv = -std::log(xc);
+    scalar f = g[0]/xc + g[1]*lnInv + g[2]*xc*lnInv;
+
+    // Remainder: linear interpolation, constant below the first point
+    const scalarList& rem = remainder_[fi];
+    if (xc <= gap_.first())
+    {
+        f += rem.first();
+    }
+    else
+    {
+        // First point > xc; xc <= gap.last() so i is in [1, size-1]
+        label i = label(std::upper_bound(gap_.begin(), gap_.end(), xc)
+                        - gap_.begin());
+        i = min(i, gap_.size() - 1);
+        const scalar w = (xc - gap_[i-1])/(gap_[i] - gap_[i-1]);
+        f += (1 - w)*rem[i-1] + w*rem[i];
+    }
+
+    return std::pow(a1, lengthPower(name))*f;
+}
+
+
+Foam::fdm::pairBaseFunctions Foam::fdm::resistanceTable::pairFunctions
+(
+    const scalar xi,
+    const scalar a1
+) const
+{
+    if (!pair_)
+    {
+        FatalErrorInFunction
+            << "Resistance table " << name_ << " is a wall table"
+            << exit(FatalError);
+    }
+
+    pairBaseFunctions f;
+    f.XA21 = value("XA21", xi, a1);
+    f.YA21 = value("YA21", xi, a1);
+    f.YB21 = value("YB21", xi, a1);
+    f.XC21 = value("XC21", xi, a1);
+    f.YC11 = value("YC11", xi, a1);
+    f.XG11 = value("XG11", xi, a1);
+    f.YG11 = value("YG11", xi, a1);
+    f.YH21 = value("YH21", xi, a1);
+    f.XP12 = value("XP12", xi, a1);
+    f.XP21 = value("XP21", xi, a1);
+    return f;
+}
+
+
+Foam::fdm::wallBaseFunctions Foam::fdm::resistanceTable::wallFunctions
+(
+    const scalar epsilon,
+    const scalar a
+) const
+{
+    if (pair_)
+    {
+        FatalErrorInFunction
+            << "Resistance table " << name_ << " is a pair table"
+            << exit(FatalError);
+    }
+
+    wallBaseFunctions f;
+    f.XA = value("XA", epsilon, a);
+    f.YA = value("YA", epsilon, a);
+    f.YB = value("YB", epsilon, a);
+    f.XC = value("XC", epsilon, a);
+    f.YC = value("YC", epsilon, a);
+    f.XG = value("XG", epsilon, a);
+    f.XP = value("XP", epsilon, a);
+    return f;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,203 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "wallSubGridMatrix.H"
+#include "particleVelocitySystem.H"
+#include "error.H"
+
+// * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
+
+Foam::fdm::wallSubGridMatrix::resistanceFunctions
+Foam::fdm::wallSubGridMatrix::expand
+(
+    const wallBaseFunctions& b,
+    const scalar a,
+    const scalar epsilon
+)
+{
+    resistanceFunctions f;
+    f.XA = b.XA;
+    f.YA = b.YA;
+    f.YB = b.YB;
+    f.YBt = -b.YB;
+    f.XC = b.XC;
+    f.YC = b.YC;
+    f.XG = b.XG;
+    f.XP = b.XP;
+
+    // Eq 3.19: no SG correction for the ambient shear part of (3.17)
+    const scalar h = (1 + epsilon)*a;
+    f.YG = h*b.YA + 0.5*b.YB;
+    f.YH = -h*b.YB - 0.5*b.YC;
+
+    return f;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdm::wallSubGridMatrix::wallSubGridMatrix
+(
+    const wallBaseFunctions& base,
+    const scalar a,
+    const scalar epsilon,
+    const vector& d
+)
+:
+    d_(d),
+    f_(expand(base, a, epsilon))
+{
+    const scalar magD = mag(d);
+    if (magD < VSMALL || a <= 0)
+    {
+        FatalErrorInFunction
+            << "Degenerate particle-wall geometry: a = " << a
+            << ", d = " << d << exit(FatalError);
+    }
+    d_ /= magD;
+
+    for (label i = 0; i < 3; ++i)
+    {
+        for (label j = 0; j < 3; ++j)
+        {
+            const scalar dd = d_[i]*d_[j];
+            const scalar perp = (i == j ? 1 : 0) - dd;
+
+            // eps_ijk d_k
+            const label k = 3 - i - j;
+            scalar epsD = 0;
+            if (i != j)
+            {
+                epsD = scalar((i - j)*(j - k)*(k - i))/2*d_[k];
+            }
+
+            R_[i][j] = f_.XA*dd + f_.YA*perp;
+            R_[i][3 + j] = f_.YBt*epsD;
+            R_[3 + i][j] = f_.YB*epsD;
+            R_[3 + i][3 + j] = f_.XC*dd + f_.YC*perp;
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fdm::wallSubGridMatrix::forceTorque
+(
+    const vector& U,
+    const vector& W,
+    const vector& Uw,
+    vector& F,
+    vector& T
+) const
+{
+    const vector Ur(U - Uw);
+    scalar u[nDof];
+    for (label k = 0; k < 3; ++k)
+    {
+        u[k] = Ur[k];
+        u[3 + k] = W[k];
+    }
+    for (label i = 0; i < 3; ++i)
+    {
+        scalar sF = 0, sT = 0;
+        for (label j = 0; j < nDof; ++j)
+        {
+            sF += R_[i][j]*u[j];
+            sT += R_[3 + i][j]*u[j];
+        }
+        F[i] = -sF;
+        T[i] = -sT;
+    }
+}
+
+
+Foam::symmTensor Foam::fdm::wallSubGridMatrix::stresslet
+(
+    const vector& U,
+    const vector& W,
+    const vector& Uw
+) const
+{
+    // Appendix A (11) forms, as in pairSubGridMatrix::G, H
+    const vector Ur(U - Uw);
+    const scalar Ud = Ur & d_;
+    return
+      -(
+            f_.XG*Ud*(sqr(d_) - symmTensor::I/3)
+          + f_.YG*(twoSymm(d_*Ur) - 2*Ud*sqr(d_))
+          + f_.YH*twoSymm(d_*(W ^ d_))
+        );
+}
+
+
+Foam::scalar Foam::fdm::wallSubGridMatrix::dipoleTrace
+(
+    const vector& U,
+    const vector& Uw
+) const
+{
+    return -f_.XP*((U - Uw) & d_);
+}
+
+
+Foam::vector Foam::fdm::wallSubGridMatrix::strainForce
+(
+    const symmTensor& E
+) const
+{
+    // X^G~ = X^G, Y^G~ = Y^G (reciprocity; verified for the FDM matrix in
+    // section 3.4)
+    const vector Ed = E & d_;
+    const scalar dEd = d_ & Ed;
+    return f_.XG*(dEd - tr(E)/3)*d_ + 2*f_.YG*(Ed - dEd*d_);
+}
+
+
+Foam::vector Foam::fdm::wallSubGridMatrix::strainTorque
+(
+    const symmTensor& E
+) const
+{
+    // Y^H~ = Y^H
+    return 2*f_.YH*(d_ ^ (E & d_));
+}
+
+
+void Foam::fdm::wallSubGridMatrix::addTo
+(
+    particleVelocitySystem& sys,
+    const label p,
+    const vector& Uw,
+    const scalar scale
+) const
+{
+    const label o = particleVelocitySystem::nDof*p;
+    for (label i = 0; i < nDof; ++i)
+    {
+        for (label j = 0; j < nDof; ++j)
+        {
+            if (R_[i][j] != 0)
+            {
+                sys.addEntry(o + i, o + j, scale*R_[i][j]);
+            }
+        }
+    }
+
+    // The wall-velocity part of -eta R (u - Uw) is a known force
+    vector F(Zero), T(Zero);
+    for (label i = 0; i < 3; ++i)
+    {
+        for (label j = 0; j < 3; ++j)
+        {
+            F[i] += R_[i][j]*Uw[j];
+            T[i] += R_[3 + i][j]*Uw[j];
+        }
+    }
+    sys.addRhs(p, scale*F, scale*T);
+}
+
+
+// ************************************************************************* //
