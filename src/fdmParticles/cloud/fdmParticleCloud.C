@@ -243,6 +243,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     firstSolveDone_(false),
     timeSeriesInterval_(1),
     system_(0),
+    lambdaPartsSum_(Zero),
     timings_{0, 0, 0, 0},
     lastSolve_{0, 0, true},
     lambdaResidual_(0)
@@ -286,6 +287,27 @@ Foam::fdmParticleCloud::fdmParticleCloud
     moments_.setSize(size());
 
     readState();
+
+    // One floor on the reduced gaps xi and epsilon for the sub-grid
+    // lubrication and the contact barrier (eq 2.57; spec 12.35)
+    const scalar gapFloor = dict_.getOrDefault<scalar>("gapFloor", 1e-5);
+    if (!(gapFloor > 0 && gapFloor < 0.1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "gapFloor " << gapFloor << " in " << dict_.name()
+            << ": allowed values are 0 < gapFloor < 0.1 (floor on the "
+            << "reduced surface gaps; thesis 1e-5)" << exit(FatalIOError);
+    }
+    subGrid_ = subGridModel::New
+    (
+        dict_,
+        mesh_,
+        subGridModel::settings
+        {
+            delta_, indicator_.b(), indicator_.c(), gapFloor
+        },
+        radius_
+    );
 
     timeSeriesInterval_ =
         dict_.subOrEmptyDict("output").getOrDefault<label>

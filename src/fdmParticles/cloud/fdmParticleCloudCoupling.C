@@ -129,6 +129,7 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
     }
 
     buildStencils();
+    subGrid_->update(position_, radius_, box_);
 
     // lambda is not advected (thesis 2.4, step 2): keep it where a support
     // still covers the cell as the initial guess, zero elsewhere.
@@ -276,6 +277,9 @@ Foam::scalar Foam::fdmParticleCloud::correct
             }
         }
     }
+    // Sub-grid resistance on the left of eq 2.43, per unit fluid density
+    subGrid_->addTo(system_, nu_);
+
     lastSolve_ = system_.solve(solveTolerance_, 1000, U_, Omega_);
     if (!lastSolve_.converged)
     {
@@ -386,9 +390,11 @@ void Foam::fdmParticleCloud::finishSolve
         s[12] = pressure;
     }
     fdm::sumOverRanks(sums);
+    lambdaPartsSum_ = Zero;
     forAll(position_, n)
     {
         const scalar* s = &sums[nSum*n];
+        lambdaPartsSum_ += vector(s[0], s[1], s[2]);
         force_[n] = -rhoFluid_*vector(s[0], s[1], s[2]);
         const tensor D =
             -rhoFluid_
@@ -407,20 +413,13 @@ void Foam::fdmParticleCloud::finishSolve
         dipoleTrace_[n] = tr(D);
     }
 
+    // Hydrodynamic totals: FDM + sub-grid (eqs 2.9, 2.68)
+    subGrid_->addHydrodynamics
+    (
+        U_, Omega_, rhoFluid_*nu_, force_, torque_, stresslet_, dipoleTrace_
+    );
+
     firstSolveDone_ = true;
-}
-
-
-Foam::vector Foam::fdmParticleCloud::sumParticleLambdaIntegrals() const
-{
-    // finishSolve stored F_p = -rho_f * (J_lambda-weighted integral of
-    // lambda), already summed over ranks
-    vector sum(Zero);
-    for (const vector& f : force_)
-    {
-        sum -= f;
-    }
-    return sum/rhoFluid_;
 }
 
 

@@ -1,0 +1,49 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "subGridModel.H"
+#include "addToRunTimeSelectionTable.H"
+
+namespace Foam
+{
+    defineTypeNameAndDebug(subGridModel, 0);
+    defineRunTimeSelectionTable(subGridModel, dictionary);
+
+    defineTypeNameAndDebug(noSubGrid, 0);
+    addToRunTimeSelectionTable(subGridModel, noSubGrid, dictionary);
+}
+
+
+Foam::subGridModel::subGridModel(const fvMesh& mesh)
+:
+    mesh_(mesh)
+{}
+
+
+Foam::autoPtr<Foam::subGridModel> Foam::subGridModel::New
+(
+    const dictionary& particleProperties,
+    const fvMesh& mesh,
+    const settings& s,
+    const scalarField& radii
+)
+{
+    const dictionary dict(particleProperties.subOrEmptyDict("subGrid"));
+    const word model(dict.getOrDefault<word>("model", "none"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(model);
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(particleProperties)
+            << "Unknown subGrid model " << model << " in "
+            << particleProperties.name() << nl
+            << "    allowed: " << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+    return cstrIter()(dict, mesh, s, radii);
+}
+
+
+// ************************************************************************* //
