@@ -1,0 +1,468 @@
+"""Exact two-sphere resistance functions (twin-multipole solution).
+
+Method
+------
+Jeffrey & Onishi (1984, J. Fluid Mech. 139, 261) for X^A, Y^A, Y^B, Y^C and
+Jeffrey (1992, Phys. Fluids A 4, 16) for X^G, Y^G, Y^H: the multipole
+coefficients P_npq, V_npq, Q_npq of the twin-multipole expansion are generated
+by their recurrence relations (as corrected by Townsend 2018,
+arXiv:1802.08226) and summed into the series
+
+    F(s) = c_0 + sum_{m in parity} c_m t^m ,   t = 2/s ,  s = 2r/(a1+a2) = xi+2,
+    c_m  = f_m(lambda) / (2(1+lambda))^m .
+
+As in Jeffrey & Onishi, the slowly convergent part of the series is summed in
+closed form: c_m -> g1 + 2 g2/m - 4 g3/(m(m+2)) for m -> inf, and
+
+    sum_m t^m, sum_m (2/m) t^m, sum_m 4/(m(m+2)) t^m
+
+are known functions of t whose expansions at t -> 1 (contact) give exactly the
+singular terms g1/xi + g2 ln(1/xi) + g3 xi ln(1/xi).  The remaining series
+sum_m (c_m - g1 - 2g2/m + 4g3/(m(m+2))) t^m converges absolutely at t = 1, so
+the same expression is accurate for every xi > 0 (far field and near contact);
+no switching between a far-field series and a lubrication formula is needed.
+
+X^C (rotation about the line of centres) is computed exactly from the rotlet
+image series (each rotlet has a single rotlet image in the other sphere,
+strength -(a/D)^3 at the inverse point), which converges for every xi > 0.
+
+Implementation notes
+--------------------
+The recurrences are evaluated numerically for a given lambda, collapsing the
+(p, q) double index into k = p+q with the two weightings
+W_nk = sum_{p+q=k} X_npq lambda^q and U_nk = sum_{p+q=k} X_npq lambda^p
+(the recurrence swaps the roles of p and q), and scaled by (1+lambda)^-k.
+This costs O(K^3) per problem instead of O(K^4) and is written from the
+equations, not from any existing code.
+
+Normalisation
+-------------
+``hat(name, xi, lam)`` returns the dimensionless scalars in the convention of
+the reference table data/resistance/reference (Townsend / Wilson): A by
+6 pi a1, B and G by 4 pi a1^2, C and H by 8 pi a1^3, for both the 11 and the 12
+rows, viscosity eta = 1, sign convention F = -eta R.U (X11A > 0, X12A < 0).
+``base(name, xi, lam)`` returns the ten dimensional base functions of the
+sub-grid method (a1 = 1, eta = 1), "21" meaning the force/torque/stresslet on
+sphere 2 due to the motion of sphere 1:
+
+    XA21 = 6 pi X12A^(lam)           YA21 = 6 pi Y12A^(lam)
+    YB21 = -4 pi lam^2 Y12B^(1/lam)  XC21 = 8 pi X12C^(lam)
+    YC11 = 8 pi Y11C^(lam)           XG11 = 4 pi X11G^(lam)
+    YG11 = 4 pi Y11G^(lam)           YH21 = 8 pi lam^3 Y12H^(1/lam)
+    XP12, XP21  : see below (pressure moments, UNVERIFIED constants)
+
+(relabelling the spheres reverses d, hence the minus sign for B, G, P.)
+
+Pressure moments X^P
+--------------------
+The twin-multipole coefficients of X^P (Jeffrey, Morris & Brady 1993, Phys.
+Fluids A 5, 2317) could not be verified within the time available for this
+module.  X12P and X21P are therefore given by the near-contact forms of the
+thesis (spec section 10.1), with the O(1) constants P12X(lambda), P21X(lambda)
+UNKNOWN and set to 0 (flag ``XP_CONSTANT_KNOWN = False``).  These two functions
+are only meaningful for xi << 1 and must not be used quantitatively until the
+constants are determined.
+"""
+
+import math
+from functools import lru_cache
+
+import numpy as np
+
+XP_CONSTANT_KNOWN = False
+
+# default truncation order of the twin-multipole series
+KMAX = 240
+
+# working precision of the recurrences (np.longdouble was tested: the
+# coefficients agree with float64 to ~1e-14, so float64 is kept for speed)
+LD = np.float64
+
+
+# ---------------------------------------------------------------------------
+# recurrence engine
+# ---------------------------------------------------------------------------
+
+def _binom_table(nmax):
+    """table[n, s] = C(n+s, n) and C(n+s, n+1), exact integers rounded to
+    long double."""
+    b0 = np.zeros((nmax + 1, nmax + 1), dtype=LD)
+    b1 = np.zeros((nmax + 1, nmax + 1), dtype=LD)
+    for n in range(nmax + 1):
+        for s in range(nmax + 1):
+            b0[n, s] = LD(str(math.comb(n + s, n)))
+            b1[n, s] = LD(str(math.comb(n + s, n + 1)))
+    return b0, b1
+
+
+def _terms(kind, n, s):
+    """Recurrence terms for target order n (scalar) and source orders s
+    (array).  Each term is (coef(s), source, alpha, beta) meaning
+    coef * X_src(s, q - s - alpha, p - n + beta).  Returns dict target->list.
+    """
+    n = LD(n)
+    sf = s.astype(LD)
+    out = {}
+    if kind == "X":
+        b = _B0[int(n), s]
+        a = n * (2 * n + 1) * (2 * n * sf - n - sf + 2) / (
+            2 * (n + 1) * (2 * sf - 1) * (n + sf))
+        out["P"] = [
+            (b * a, "P", 0, 1),
+            (-b * n * (2 * n - 1) / (2 * (n + 1)), "P", 0, -1),
+            (-b * n * (4 * n * n - 1) / (2 * (n + 1) * (2 * sf + 1)), "V", 2, 1),
+        ]
+        out["Vx"] = [(-b * 2 * n / ((n + 1) * (2 * n + 3)), "P", 0, -1)]
+    else:
+        b = _B1[int(n), s]
+        a = (2 * n + 1) / (2 * (n + 1)) * (
+            3 * (n + sf) - (n * sf + 1) * (2 * n * sf - sf - n + 2)) / (
+            sf * (n + sf) * (2 * sf - 1))
+        out["P"] = [
+            (b * a, "P", 0, 1),
+            (b * n * (2 * n - 1) / (2 * (n + 1)), "P", 0, -1),
+            (b * n * (4 * n * n - 1) / (2 * (n + 1) * (2 * sf + 1)), "V", 2, 1),
+            (-b * 2 * (4 * n * n - 1) / (3 * (n + 1)), "Q", 1, 1),
+        ]
+        out["Q"] = [
+            (b * sf / (n + 1), "Q", 1, 0),
+            (-b * 3 / (2 * n * sf * (n + 1)), "P", 0, 0),
+        ]
+        out["Vx"] = [(b * 2 * n / ((n + 1) * (2 * n + 3)), "P", 0, -1)]
+    return out
+
+
+_B0, _B1 = _binom_table(KMAX + 4)
+
+
+@lru_cache(maxsize=64)
+def _solve(problem, lam, K=KMAX):
+    """Solve the twin-multipole recurrences for one problem.
+
+    problem: 'XA' (axisymmetric translation), 'YA' (transverse translation),
+             'YC' (transverse rotation).
+    Returns dict of arrays W[src][n, k] (scaled by (1+lam)^-k), src in P,V,Q.
+    """
+    kind = "X" if problem == "XA" else "Y"
+    N = K + 3
+    srcs = ["P", "V"] + (["Q"] if kind == "Y" else [])
+    W = {x: np.zeros((N, K + 1), dtype=LD) for x in srcs}
+    U = {x: np.zeros((N, K + 1), dtype=LD) for x in srcs}
+    if problem in ("XA", "YA"):
+        for x in ("P", "V"):
+            W[x][1, 0] = U[x][1, 0] = 1.0
+    else:  # YC
+        W["Q"][1, 0] = U["Q"][1, 0] = 1.0
+    lam = LD(lam)
+    lp = LD(1) + lam
+    # cache of coefficient lists per n (independent of k)
+    cache = {}
+    for k in range(1, K + 1):
+        nmax = min(K - k + 2, N - 1)
+        for stage in (("P", "Q"), ("Vx",)):
+            for n in range(1, nmax + 1):
+                for tgt in stage:
+                    if tgt == "Q" and kind == "X":
+                        continue
+                    key = (n, tgt)
+                    if key not in cache:
+                        s_all = np.arange(1, N)
+                        cache[key] = _terms(kind, n, s_all).get(tgt, [])
+                    w = LD(0)
+                    u = LD(0)
+                    for coef, src, al, be in cache[key]:
+                        # k' = k - n - s - al + be  >= 0
+                        smax = k - n - al + be
+                        if smax < 1:
+                            continue
+                        s = np.arange(1, smax + 1)
+                        kp = k - n - s - al + be
+                        c = coef[:smax]
+                        sc = lp ** (-(k - kp).astype(LD))
+                        w += np.sum(c * lam ** (s + al) * sc * U[src][s, kp])
+                        u += np.sum(c * lam ** (n - be) * sc * W[src][s, kp])
+                    if tgt == "Vx":
+                        W["V"][n, k] = W["P"][n, k] + w
+                        U["V"][n, k] = U["P"][n, k] + u
+                    else:
+                        W[tgt][n, k] = w
+                        U[tgt][n, k] = u
+    return W
+
+
+def _coeffs(fun, lam, K=KMAX):
+    """c_m = f_m / (2(1+lam))^m, m = 0..K, for the given series."""
+    return _coeffs_ld(fun, lam, K).astype(float)
+
+
+def _coeffs_ld(fun, lam, K=KMAX):
+    m = np.arange(K + 1)
+    odd = (m % 2).astype(LD)
+    lam = LD(lam)
+    if fun == "XA":
+        return _solve("XA", lam, K)["P"][1]
+    if fun == "YA":
+        return _solve("YA", lam, K)["P"][1]
+    if fun == "YB":
+        return 2.0 * _solve("YA", lam, K)["Q"][1]
+    if fun == "YC":
+        return lam ** odd * _solve("YC", lam, K)["Q"][1]
+    if fun == "XG":
+        return 0.75 * _solve("XA", lam, K)["P"][2]
+    if fun == "YG":
+        return 0.75 * _solve("YA", lam, K)["P"][2]
+    if fun == "YH":
+        return -0.375 * lam ** odd * _solve("YC", lam, K)["P"][2]
+    raise KeyError(fun)
+
+
+# ---------------------------------------------------------------------------
+# near-contact coefficients g1, g2, g3 (Jeffrey & Onishi 1984, Jeffrey 1992,
+# as corrected by Townsend 2018), in the hat normalisation of the 11 rows
+# (for 12 rows the same g multiply the series; see _SPEC)
+# ---------------------------------------------------------------------------
+
+def _g(name, l):
+    p3 = (1 + l) ** 3
+    p2 = (1 + l) ** 2
+    p1 = 1 + l
+    if name == "XA":
+        return (2 * l**2 / p3, l * (1 + 7 * l + l**2) / (5 * p3),
+                (1 + 18 * l - 29 * l**2 + 18 * l**3 + l**4) / (42 * p3))
+    if name == "YA":
+        return (0.0, 4 * l * (2 + l + 2 * l**2) / (15 * p3),
+                2 * (16 - 45 * l + 58 * l**2 - 45 * l**3 + 16 * l**4) / (375 * p3))
+    if name == "YB":
+        return (0.0, -l * (4 + l) / (5 * p2),
+                -(32 - 33 * l + 83 * l**2 + 43 * l**3) / (250 * p2))
+    if name == "YC11":
+        return (0.0, 2 * l / (5 * p1), (8 + 6 * l + 33 * l**2) / (125 * p1))
+    if name == "YC12":
+        return (0.0, l**2 / (10 * p1), l * (43 - 24 * l + 43 * l**2) / (500 * p1))
+    if name == "XG":
+        return (3 * l**2 / p3, 3 * (l + 12 * l**2 - 4 * l**3) / (10 * p3),
+                (5 + 181 * l - 453 * l**2 + 566 * l**3 - 65 * l**4) / (140 * p3))
+    if name == "YG":
+        return (0.0, (4 * l - l**2 + 7 * l**3) / (10 * p3),
+                (32 - 179 * l + 532 * l**2 - 356 * l**3 + 221 * l**4) / (500 * p3))
+    if name == "YH11":
+        return (0.0, (2 * l - l**2) / (10 * p2),
+                (16 - 61 * l + 180 * l**2 + 2 * l**3) / (500 * p2))
+    if name == "YH12":
+        return (0.0, (l**2 + 7 * l**3) / (20 * p2),
+                (43 * l + 147 * l**2 - 185 * l**3 + 221 * l**4) / (1000 * p2))
+    raise KeyError(name)
+
+
+# hat function -> (coefficient series, g-set, parity, sign, include c0)
+_SPEC = {
+    "X11A": ("XA", "XA", 0, +1, True),
+    "X12A": ("XA", "XA", 1, -1, False),
+    "Y11A": ("YA", "YA", 0, +1, True),
+    "Y12A": ("YA", "YA", 1, -1, False),
+    "Y11B": ("YB", "YB", 1, +1, False),
+    "Y12B": ("YB", "YB", 0, -1, False),
+    "Y11C": ("YC", "YC11", 0, +1, True),
+    "Y12C": ("YC", "YC12", 1, +1, False),
+    "X11G": ("XG", "XG", 1, +1, False),
+    "X12G": ("XG", "XG", 0, -1, False),
+    "Y11G": ("YG", "YG", 1, +1, False),
+    "Y12G": ("YG", "YG", 0, -1, False),
+    "Y11H": ("YH", "YH11", 0, +1, False),
+    "Y12H": ("YH", "YH12", 1, +1, False),
+}
+
+
+def _closed_sums(xi, parity):
+    """E1 = sum t^m, E2 = sum 2/m t^m, E3 = sum 4/(m(m+2)) t^m over the
+    parity class (even: m>=2, odd: m>=1), t = 2/(2+xi).  Written in xi to
+    avoid the cancellation in 1 - t^2 near contact."""
+    xi = np.asarray(xi, dtype=float)
+    q = xi * (4.0 + xi)                      # = 4 (1 - t^2) / t^2
+    if parity == 0:
+        L = np.log((2.0 + xi) ** 2 / q)      # -ln(1 - t^2)
+        return 4.0 / q, L, 1.0 - 0.25 * q * L
+    L = np.log((4.0 + xi) / xi)              # ln((1+t)/(1-t))
+    return 2.0 * (2.0 + xi) / q, L, (2.0 + xi) - 0.25 * q * L
+
+
+def _residual_coeffs(name, lam, K=KMAX):
+    fun, gname, par, sign, c0 = _SPEC[name]
+    c = _coeffs(fun, lam, K)
+    g1, g2, g3 = _g(gname, lam)
+    m = np.arange(K + 1, dtype=float)
+    mm = np.where(m > 0, m, 1.0)
+    e = c - g1 - 2 * g2 / mm + 4 * g3 / (mm * (mm + 2))
+    sel = (np.arange(K + 1) % 2 == par) & (np.arange(K + 1) > 0)
+    return c, e, sel, (g1, g2, g3)
+
+
+def _tail_correction(e, sel, t):
+    """Estimate of sum_{m>K} e_m t^m assuming e_m ~ C m^-p (fitted on the
+    last coefficients).  Small; reduces truncation error at t -> 1."""
+    idx = np.nonzero(sel)[0]
+    m1, m2 = idx[-20], idx[-1]
+    e1, e2 = e[m1], e[m2]
+    if e1 == 0.0 or e2 == 0.0 or np.sign(e1) != np.sign(e2) or abs(e2) >= abs(e1):
+        return 0.0
+    p = math.log(e1 / e2) / math.log(m2 / m1)
+    if p <= 1.5:
+        return 0.0
+    C = e2 * m2 ** p
+    mt = np.arange(m2 + 2, m2 + 20002, 2, dtype=float)
+    w = C * mt ** (-p)
+    t = np.atleast_1d(np.asarray(t, dtype=float))
+    return np.array([np.sum(w * ti ** mt) for ti in t])
+
+
+def hat(name, xi, lam, K=KMAX, tail=True):
+    """Dimensionless scalar `name` (e.g. 'X11A', 'Y12H', 'X12C') at gap xi."""
+    xi = np.asarray(xi, dtype=float)
+    if name in ("X11C", "X12C"):
+        return _xc_hat(name, xi, lam)
+    fun, gname, par, sign, inc0 = _SPEC[name]
+    c, e, sel, (g1, g2, g3) = _residual_coeffs(name, lam, K)
+    t = 2.0 / (2.0 + xi)
+    E1, E2, E3 = _closed_sums(xi, par)
+    m = np.arange(K + 1)[sel]
+    tt = np.atleast_1d(t)[:, None] ** m[None, :]
+    ser = tt @ e[sel]
+    if tail:
+        ser = ser + _tail_correction(e, sel, np.atleast_1d(t))
+    val = g1 * E1 + g2 * E2 - g3 * E3 + ser.reshape(np.shape(t))
+    if inc0:
+        val = val + c[0]
+    return sign * val
+
+
+def singular(name, lam):
+    """Near-contact singular coefficients (g1, g2, g3) of the hat function:
+    hat = g1/xi + g2 ln(1/xi) + g3 xi ln(1/xi) + const + o(1)."""
+    if name == "X11C":
+        return (0.0, 0.0, -lam**2 / (4 * (1 + lam)))
+    if name == "X12C":
+        return (0.0, 0.0, lam**2 / (4 * (1 + lam)))
+    fun, gname, par, sign, inc0 = _SPEC[name]
+    g = _g(gname, lam)
+    return tuple(sign * x for x in g)
+
+
+def contact_constant(name, lam, K=KMAX):
+    """O(1) constant of the near-contact form of the hat function,
+    evaluated in closed form at t = 1 (xi = 0)."""
+    if name in ("X11C", "X12C"):
+        from scipy.special import zeta
+        r = lam / (1.0 + lam)
+        if name == "X11C":
+            return float(r**3 * zeta(3, r))
+        return float(-r**3 * zeta(3, 1.0))
+    fun, gname, par, sign, inc0 = _SPEC[name]
+    c, e, sel, (g1, g2, g3) = _residual_coeffs(name, lam, K)
+    ser = np.sum(e[sel]) + float(np.sum(_tail_correction(e, sel, 1.0)))
+    if par == 0:   # E1 - 1/xi -> -1/4, E2 - ln(1/xi) -> 0, E3 -> 1
+        val = -0.25 * g1 - g3 + ser
+    else:          # O1 - 1/xi -> 1/4, O2 - ln(1/xi) -> 2 ln 2, O3 -> 2
+        val = 0.25 * g1 + 2 * math.log(2.0) * g2 - 2 * g3 + ser
+    if inc0:
+        val += c[0]
+    return float(sign * val)
+
+
+def base_constant(name, lam):
+    """O(1) constant of the near-contact form of a base function
+    (dimensional).  X^P: unknown, returns 0.0 (see XP_CONSTANT_KNOWN)."""
+    hname, inv, fac = BASE[name]
+    if hname is None:
+        return 0.0
+    ll = 1.0 / lam if inv else lam
+    return fac(lam) * contact_constant(hname, ll)
+
+
+# ---------------------------------------------------------------------------
+# X^C : rotlet images
+# ---------------------------------------------------------------------------
+
+def _xc_hat(name, xi, lam, nimg=200000):
+    xi = np.atleast_1d(np.asarray(xi, dtype=float))
+    out = np.empty_like(xi)
+    for i, x in enumerate(xi):
+        R = (1.0 + lam) * (2.0 + x) / 2.0   # centre distance, a1 = 1
+        a = (1.0, lam)
+        # rotlet: owner sphere index, position along axis from centre 1
+        pos, S, own = 0.0, 1.0, 0           # sphere 1 rotates, strength a1^3
+        tot = [1.0, 0.0]
+        for it in range(nimg):
+            other = 1 - own
+            c = 0.0 if other == 0 else R
+            D = abs(pos - c)
+            ai = a[other]
+            S = -S * (ai / D) ** 3
+            pos = c + (ai * ai / D) * (1.0 if pos > c else -1.0)
+            own = other
+            tot[own] += S
+            if abs(S) < 1e-17 * abs(tot[0]):
+                break
+        out[i] = tot[0] if name == "X11C" else tot[1]
+    return out.reshape(np.shape(xi)) if out.size > 1 else out
+
+
+# ---------------------------------------------------------------------------
+# dimensional base functions of the sub-grid method (a1 = 1, eta = 1)
+# ---------------------------------------------------------------------------
+
+PI = math.pi
+
+
+def _xp_singular(name, lam):
+    """Near-contact X^P forms of spec section 10.1, dimensional (a1 = 1)."""
+    A = PI * (1 + lam) ** 2
+    if name == "XP12":
+        l = lam
+        return (A * (-12 * l**2 / (1 + l) ** 5),
+                A * (-12 * (l - 4 * l**2) / (10 * (1 + l) ** 4)),
+                A * (-4 * (5 - 97 * l + 64 * l**2 - 44 * l**3 + l**4)
+                     / (140 * (1 + l) ** 4)))
+    m = 1.0 / lam
+    return (A * (12 * m**2 / (1 + m) ** 5),
+            A * (12 * (m - 4 * m**2) / (10 * (1 + m) ** 4)),
+            A * (4 * (5 - 97 * m + 64 * m**2 - 44 * m**3 + m**4)
+                 / (140 * (1 + m) ** 4)))
+
+
+# name -> (hat name, lambda transform (False: lam, True: 1/lam), factor(lam))
+BASE = {
+    "XA21": ("X12A", False, lambda l: 6 * PI),
+    "YA21": ("Y12A", False, lambda l: 6 * PI),
+    "YB21": ("Y12B", True, lambda l: -4 * PI * l**2),
+    "XC21": ("X12C", False, lambda l: 8 * PI),
+    "YC11": ("Y11C", False, lambda l: 8 * PI),
+    "XG11": ("X11G", False, lambda l: 4 * PI),
+    "YG11": ("Y11G", False, lambda l: 4 * PI),
+    "YH21": ("Y12H", True, lambda l: 8 * PI * l**3),
+    "XP12": (None, False, None),
+    "XP21": (None, False, None),
+}
+BASE_ORDER = ["XA21", "YA21", "YB21", "XC21", "YC11", "XG11", "YG11",
+              "YH21", "XP12", "XP21"]
+
+
+def base_singular(name, lam):
+    """Singular coefficients (of 1/xi, ln(1/xi), xi ln(1/xi)) of a base
+    function, dimensional."""
+    hname, inv, fac = BASE[name]
+    if hname is None:
+        return _xp_singular(name, lam)
+    ll = 1.0 / lam if inv else lam
+    return tuple(fac(lam) * g for g in singular(hname, ll))
+
+
+def base(name, xi, lam):
+    """Dimensional base function (a1 = 1, eta = 1) at gap xi."""
+    hname, inv, fac = BASE[name]
+    xi = np.asarray(xi, dtype=float)
+    if hname is None:
+        g = _xp_singular(name, lam)
+        li = np.log(1.0 / xi)
+        return g[0] / xi + g[1] * li + g[2] * xi * li  # + unknown constant (0)
+    ll = 1.0 / lam if inv else lam
+    return fac(lam) * hat(hname, xi, ll)
