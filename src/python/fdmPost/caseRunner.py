@@ -1,0 +1,66 @@
+"""Make and run small fdmSuspensionFoam cases from a template: the
+measurement loops of the sub-grid calibration and of the validations.
+
+fill_template  copy a template case and replace its @TOKENS@
+run_case       blockMesh + fdmSuspensionFoam; the last particles.h5 record
+"""
+
+import os
+import shutil
+import subprocess
+
+import numpy as np
+
+
+def vec(v):
+    """OpenFOAM vector text of a 3-sequence, full precision."""
+    return "(%s)" % " ".join("%.17g" % c for c in v)
+
+
+def fill_template(template, case, tokens):
+    """Fresh copy of template (0, constant, system) in case with every
+    token (dict key, e.g. '@L@') replaced by its value in system/ and
+    constant/ (and 0/)."""
+    if os.path.isdir(case):
+        shutil.rmtree(case)
+    shutil.copytree(template, case)
+    for sub in ("0", "system", "constant"):
+        folder = os.path.join(case, sub)
+        for name in os.listdir(folder):
+            path = os.path.join(folder, name)
+            with open(path) as f:
+                text = f.read()
+            for k, v in tokens.items():
+                text = text.replace(k, v)
+            with open(path, "w") as f:
+                f.write(text)
+
+
+def run_case(case, keep_mesh=False):
+    """blockMesh and fdmSuspensionFoam in case (logs log.<app>); returns
+    the last record of postProcessing/particles.h5 as a dict of arrays
+    (force, torque, stresslet, dipoleTrace, velocity, angularVelocity,
+    position).  Raises RuntimeError naming the log on failure."""
+    for app in ("blockMesh", "fdmSuspensionFoam"):
+        log = os.path.join(case, "log." + app)
+        with open(log, "w") as f:
+            rc = subprocess.call([app, "-case", case], stdout=f,
+                                 stderr=subprocess.STDOUT)
+        if rc != 0:
+            raise RuntimeError("%s failed in %s (see %s)" % (app, case, log))
+    import h5py
+    with h5py.File(os.path.join(case, "postProcessing", "particles.h5"),
+                   "r") as f:
+        state = {k: np.array(f[k][-1]) for k in
+                 ("position", "velocity", "angularVelocity", "force",
+                  "torque", "stresslet", "dipoleTrace")}
+    if not keep_mesh:
+        # The mesh is the bulk of a case: the measurement is in the h5 file
+        shutil.rmtree(os.path.join(case, "constant", "polyMesh"))
+    return state
+
+
+def symm(s):
+    """3 x 3 array of a symmTensor given as xx xy xz yy yz zz."""
+    return np.array([[s[0], s[1], s[2]], [s[1], s[3], s[4]],
+                     [s[2], s[4], s[5]]])

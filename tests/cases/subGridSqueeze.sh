@@ -1,0 +1,21 @@
+#!/bin/bash
+# Case test: two free spheres (a = 1, Delta = a/5) at a surface gap of
+# 0.02 a, pushed together by equal and opposite forces, walls at x = +-5,
+# cyclic in y and z.  Solved with the frameInvariant sub-grid lubrication
+# and without it; checkSubGridSqueeze.py compares the approach velocity
+# with the two-sphere theory (Jeffrey & Onishi 1984).
+source "${0%/*}/caseTestFunctions"
+
+work=$(caseWorkDir subGridSqueeze)
+for model in frameInvariant none
+do
+    cloneCase subGridSqueeze "$work/$model"
+    foamDictionary -entry subGrid.model -set $model \
+        "$work/$model/constant/particleProperties" > /dev/null || exit 1
+    (
+        cd "$work/$model" || exit 1
+        runLogged blockMesh && runLogged fdmSuspensionFoam
+    ) || exit 1
+done
+
+"$FDM_PYTHON" "$caseTemplates/checkSubGridSqueeze.py" "$work"
