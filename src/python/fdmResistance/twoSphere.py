@@ -40,7 +40,8 @@ Normalisation
 ``hat(name, xi, lam)`` returns the dimensionless scalars in the convention of
 the reference table data/resistance/reference (Townsend / Wilson): A by
 6 pi a1, B and G by 4 pi a1^2, C and H by 8 pi a1^3, for both the 11 and the 12
-rows, viscosity eta = 1, sign convention F = -eta R.U (X11A > 0, X12A < 0).
+rows (the pressure moments X12P, X21P, not in the reference: by 4 pi a1^2),
+viscosity eta = 1, sign convention F = -eta R.U (X11A > 0, X12A < 0).
 ``base(name, xi, lam)`` returns the ten dimensional base functions of the
 sub-grid method (a1 = 1, eta = 1), "21" meaning the force/torque/stresslet on
 sphere 2 due to the motion of sphere 1:
@@ -49,19 +50,39 @@ sphere 2 due to the motion of sphere 1:
     YB21 = -4 pi lam^2 Y12B^(1/lam)  XC21 = 8 pi X12C^(lam)
     YC11 = 8 pi Y11C^(lam)           XG11 = 4 pi X11G^(lam)
     YG11 = 4 pi Y11G^(lam)           YH21 = 8 pi lam^3 Y12H^(1/lam)
-    XP12, XP21  : see below (pressure moments, UNVERIFIED constants)
+    XP12 = 4 pi X12P^(lam)           XP21 = 4 pi X21P^(lam)
 
 (relabelling the spheres reverses d, hence the minus sign for B, G, P.)
 
 Pressure moments X^P
 --------------------
-The twin-multipole coefficients of X^P (Jeffrey, Morris & Brady 1993, Phys.
-Fluids A 5, 2317) could not be verified within the time available for this
-module.  X12P and X21P are therefore given by the near-contact forms of the
-thesis (spec section 10.1), with the O(1) constants P12X(lambda), P21X(lambda)
-UNKNOWN and set to 0 (flag ``XP_CONSTANT_KNOWN = False``).  These two functions
-are only meaningful for xi << 1 and must not be used quantitatively until the
-constants are determined.
+X^P_ab: trace s_a of the force dipole  oint (sigma.n)(x - x_a) dS  of sphere a
+due to the translation of sphere b along d (d from sphere 1 to sphere 2),
+s_a = -eta X^P_ab d.U_b (Jeffrey, Morris & Brady 1993, Phys. Fluids A 5,
+2317; the sub-grid method needs X^P_12 and X^P_21).  Derived here, not taken
+from JMB's recurrences:
+
+* on a rigid surface n.e.n = 0, so s_a = -a_a oint p dS;
+* split p = p_a + p_b into the Lamb expansions about the two centres; the
+  singular harmonics p_a (n >= 1) integrate to zero over sphere a and p_b is
+  harmonic inside sphere a, so by the mean-value theorem
+      s_a = -4 pi a_a^3 p_b(x_a)   (Faxen law for the dipole trace);
+* p_b(x_a) follows from the X^A twin-multipole coefficients already solved,
+  p_b(x_a) = (3/2) eta U sum_n P_n^b (a_b/R)^(n+1) / a_b  (JO normalisation,
+  P_1 = X11A; checked for n = 2 against X^G), reordered as a series in
+  t^m / (1+lam)^m, m = k + n + 1 (see _xp_coeffs).  Even m belongs to the
+  motion of sphere b itself (X21P, X12P), odd m to sphere a's (X11P, X22P,
+  not exported).
+The coefficients approach g1 + 2g2/m - 4g3/(m(m+2)) with exactly the g of
+the thesis near-contact forms (spec 10.1; residual ~1e-7 at m = 240), so the
+singular terms are summed in closed form as for the other functions and the
+O(1) constants P12X, P21X follow (contact_constant / base_constant).
+Independent check (test_resistance.py): a least-squares boundary-collocation
+solution with Lamb's harmonics about both centres and the trace integrated
+over the surface agrees to < 2e-7 for xi = 0.01 .. 3; extrapolating its
+remainder to xi -> 0 reproduces the constants to ~1e-4.  Symmetry
+X12P^(lam) = -lam^2 X21P^(1/lam) holds to 1e-14.  Far field:
+XP21 = 6 pi lam^3 X11A^/R^2 + O(R^-6).
 """
 
 import math
@@ -69,7 +90,7 @@ from functools import lru_cache
 
 import numpy as np
 
-XP_CONSTANT_KNOWN = False
+XP_CONSTANT_KNOWN = True   # X^P series exact, O(1) constants determined
 
 # default truncation order of the twin-multipole series
 KMAX = 240
@@ -187,6 +208,10 @@ def _solve(problem, lam, K=KMAX):
                     else:
                         W[tgt][n, k] = w
                         U[tgt][n, k] = u
+    # the U weighting gives the coefficients of sphere 2 (lambda^p), needed
+    # for the pressure moment X12P
+    W = dict(W)
+    W["P_2"] = U["P"]
     return W
 
 
@@ -213,7 +238,39 @@ def _coeffs_ld(fun, lam, K=KMAX):
         return 0.75 * _solve("YA", lam, K)["P"][2]
     if fun == "YH":
         return -0.375 * lam ** odd * _solve("YC", lam, K)["P"][2]
+    if fun in ("XP21", "XP12"):
+        return _xp_coeffs(fun, lam, K)
     raise KeyError(fun)
+
+
+def _xp_coeffs(fun, lam, K=KMAX):
+    """Series coefficients of the pressure moments (see module docstring):
+    the pressure of the other sphere's Lamb expansion at the centre of
+    sphere alpha,  p_beta(x_alpha) = (3/2) eta U sum_n P_n^beta
+    (a_beta/R)^(n+1) / a_beta  (a1 = 1), reordered as a series in
+    t^m / (1+lam)^m with m = k + n + 1.
+
+    XP21 (trace on 2, sphere 1 moves): c_m = (3/2) lam^3 sum_n W_n,m-n-1
+          (1+lam)^-(n+1)             -> X21P^ = sum_{m even} c_m t^m
+    XP12 (trace on 1, sphere 2 moves): c_m = (3/2) sum_n U_n,m-n-1
+          lam^n (1+lam)^-(n+1)       -> X12P^ = -sum_{m even} c_m t^m
+    (W, U: the lambda^q and lambda^p weightings = sphere 1 and sphere 2
+    coefficients; even m = motion of the sphere that carries the harmonics,
+    in its own frame whose axis points to the other sphere)."""
+    S = _solve("XA", lam, K)
+    lam = LD(lam)
+    if fun == "XP21":
+        C, fac = S["P"], 1.5 * lam ** 3
+        wn = lambda n: LD(1)
+    else:
+        C, fac = S["P_2"], LD(1.5)
+        wn = lambda n: lam ** n
+    c = np.zeros(K + 1, dtype=LD)
+    lp = LD(1) + lam
+    for n in range(1, K):
+        k = np.arange(0, K - n)              # m = k + n + 1 <= K
+        c[k + n + 1] += wn(n) * lp ** (-(n + 1)) * C[n, k]
+    return fac * c
 
 
 # ---------------------------------------------------------------------------
@@ -251,6 +308,10 @@ def _g(name, l):
     if name == "YH12":
         return (0.0, (l**2 + 7 * l**3) / (20 * p2),
                 (43 * l + 147 * l**2 - 185 * l**3 + 221 * l**4) / (1000 * p2))
+    if name == "XP21":   # thesis forms (spec 10.1) / (4 pi a1^2)
+        return tuple(x / (4 * PI) for x in _xp_singular("XP21", l))
+    if name == "XP12":   # the series carries sign -1 (see _SPEC)
+        return tuple(-x / (4 * PI) for x in _xp_singular("XP12", l))
     raise KeyError(name)
 
 
@@ -270,6 +331,8 @@ _SPEC = {
     "Y12G": ("YG", "YG", 0, -1, False),
     "Y11H": ("YH", "YH11", 0, +1, False),
     "Y12H": ("YH", "YH12", 1, +1, False),
+    "X21P": ("XP21", "XP21", 0, +1, False),
+    "X12P": ("XP12", "XP12", 0, -1, False),
 }
 
 
@@ -370,10 +433,8 @@ def contact_constant(name, lam, K=KMAX):
 
 def base_constant(name, lam):
     """O(1) constant of the near-contact form of a base function
-    (dimensional).  X^P: unknown, returns 0.0 (see XP_CONSTANT_KNOWN)."""
+    (dimensional)."""
     hname, inv, fac = BASE[name]
-    if hname is None:
-        return 0.0
     ll = 1.0 / lam if inv else lam
     return fac(lam) * contact_constant(hname, ll)
 
@@ -414,7 +475,9 @@ PI = math.pi
 
 
 def _xp_singular(name, lam):
-    """Near-contact X^P forms of spec section 10.1, dimensional (a1 = 1)."""
+    """Singular terms of the near-contact X^P forms of spec section 10.1
+    (Jeffrey, Morris & Brady 1993), dimensional (a1 = 1).  The series of
+    _xp_coeffs reproduces them (test_residual_coefficients_decay)."""
     A = PI * (1 + lam) ** 2
     if name == "XP12":
         l = lam
@@ -439,8 +502,8 @@ BASE = {
     "XG11": ("X11G", False, lambda l: 4 * PI),
     "YG11": ("Y11G", False, lambda l: 4 * PI),
     "YH21": ("Y12H", True, lambda l: 8 * PI * l**3),
-    "XP12": (None, False, None),
-    "XP21": (None, False, None),
+    "XP12": ("X12P", False, lambda l: 4 * PI),
+    "XP21": ("X21P", False, lambda l: 4 * PI),
 }
 BASE_ORDER = ["XA21", "YA21", "YB21", "XC21", "YC11", "XG11", "YG11",
               "YH21", "XP12", "XP21"]
@@ -450,8 +513,6 @@ def base_singular(name, lam):
     """Singular coefficients (of 1/xi, ln(1/xi), xi ln(1/xi)) of a base
     function, dimensional."""
     hname, inv, fac = BASE[name]
-    if hname is None:
-        return _xp_singular(name, lam)
     ll = 1.0 / lam if inv else lam
     return tuple(fac(lam) * g for g in singular(hname, ll))
 
@@ -460,9 +521,5 @@ def base(name, xi, lam):
     """Dimensional base function (a1 = 1, eta = 1) at gap xi."""
     hname, inv, fac = BASE[name]
     xi = np.asarray(xi, dtype=float)
-    if hname is None:
-        g = _xp_singular(name, lam)
-        li = np.log(1.0 / xi)
-        return g[0] / xi + g[1] * li + g[2] * xi * li  # + unknown constant (0)
     ll = 1.0 / lam if inv else lam
     return fac(lam) * hat(hname, xi, ll)

@@ -103,8 +103,11 @@ PAIR_HEADER = """\
 // XC21 = 8pi X12C^(l), YC11 = 8pi Y11C^(l), XG11 = 4pi X11G^(l),
 // YG11 = 4pi Y11G^(l), YH21 = 8pi l^3 Y12H^(1/l)  (^ : Townsend/Wilson
 // normalisation by sphere 1: A 6pi a1, B,G 4pi a1^2, C,H 8pi a1^3).
-// XP12, XP21: near-contact forms of the thesis (spec 10.1) ONLY; their O(1)
-// constants are UNKNOWN and set to 0 (remainder = 0): not verified.
+// XP12 = 4pi X12P^(l), XP21 = 4pi X21P^(l): pressure moments (trace of the
+// force dipole, s_a = -eta XP_ab d.U_b), exact: s_a = -4pi a_a^3 p_b(x_a) with
+// p_b from the same X^A twin-multipole solution; singular part = thesis forms
+// (spec 10.1, Jeffrey, Morris & Brady 1993), remainder(0) = P12X, P21X times
+// pi (1+l)^2; checked against boundary collocation to < 2e-7.
 // Interpolation check (max rel. error of f at grid mid-points): %s
 """
 
