@@ -3,6 +3,7 @@ measurement loops of the sub-grid calibration and of the validations.
 
 fill_template  copy a template case and replace its @TOKENS@
 run_case       blockMesh + fdmSuspensionFoam; the last particles.h5 record
+read_last_record   that record of a case already run
 """
 
 import os
@@ -48,16 +49,23 @@ def run_case(case, keep_mesh=False):
                                  stderr=subprocess.STDOUT)
         if rc != 0:
             raise RuntimeError("%s failed in %s (see %s)" % (app, case, log))
-    import h5py
-    with h5py.File(os.path.join(case, "postProcessing", "particles.h5"),
-                   "r") as f:
-        state = {k: np.array(f[k][-1]) for k in
-                 ("position", "velocity", "angularVelocity", "force",
-                  "torque", "stresslet", "dipoleTrace")}
+    state = read_last_record(case)
     if not keep_mesh:
         # The mesh is the bulk of a case: the measurement is in the h5 file
         shutil.rmtree(os.path.join(case, "constant", "polyMesh"))
     return state
+
+
+def read_last_record(case):
+    """Last record of <case>/postProcessing/particles.h5 as a dict of
+    arrays (position, velocity, angularVelocity, force, torque, stresslet,
+    dipoleTrace)."""
+    import h5py
+    with h5py.File(os.path.join(case, "postProcessing", "particles.h5"),
+                   "r") as f:
+        return {k: np.array(f[k][-1]) for k in
+                ("position", "velocity", "angularVelocity", "force",
+                 "torque", "stresslet", "dipoleTrace")}
 
 
 def symm(s):

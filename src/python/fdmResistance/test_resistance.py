@@ -29,13 +29,13 @@ both centres, dipole trace integrated over the sphere surface):
 
 import math
 import os
-import re
 import unittest
 
 import numpy as np
 
 from . import twoSphere as ts
 from . import wall
+from .tables import evaluate, read_table
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "..", "..", ".."))
@@ -270,36 +270,30 @@ class TestWall(unittest.TestCase):
             self.assertAlmostEqual(g[1], -1.2, delta=1e-3)
 
 
-def _read_table(path):
-    with open(path) as fh:
-        txt = fh.read()
-    txt = re.sub(r"//[^\n]*", "", txt)
-    gap = np.array(re.search(r"gap\s*\(([^)]*)\)", txt).group(1).split(), float)
-    funcs = {}
-    for m in re.finditer(r"(\w+)\s*\{\s*singular\s*\(([^)]*)\);\s*remainder\s*\(([^)]*)\);", txt):
-        funcs[m.group(1)] = (np.array(m.group(2).split(), float),
-                             np.array(m.group(3).split(), float))
-    return gap, funcs
-
-
 class TestTables(unittest.TestCase):
     def test_pair_table_lambda1(self):
-        gap, funcs = _read_table(os.path.join(TABLES, "twoSphereTheory_lambda1"))
+        meta, gap, funcs = read_table(
+            os.path.join(TABLES, "twoSphereTheory_lambda1"))
+        self.assertEqual(meta["kind"], "pair")
         self.assertEqual(list(funcs), ts.BASE_ORDER)
         x = np.array([1e-5, 3.3e-4, 0.0123, 0.2, 0.47])
-        for name, (g, rem) in funcs.items():
-            self.assertEqual(len(rem), len(gap))
-            f = g[0] / x + (g[1] + g[2] * x) * np.log(1 / x) + np.interp(x, gap, rem)
-            np.testing.assert_allclose(f, ts.base(name, x, 1.0), rtol=1e-4, err_msg=name)
-            self.assertAlmostEqual(rem[0], ts.base_constant(name, 1.0), delta=1e-9)
+        for name, fun in funcs.items():
+            self.assertEqual(len(fun["remainder"]), len(gap))
+            np.testing.assert_allclose(evaluate(fun, gap, x),
+                                       ts.base(name, x, 1.0), rtol=1e-4,
+                                       err_msg=name)
+            self.assertAlmostEqual(fun["remainder"][0],
+                                   ts.base_constant(name, 1.0), delta=1e-9)
 
     def test_wall_table(self):
-        gap, funcs = _read_table(os.path.join(TABLES, "wallTheory"))
+        meta, gap, funcs = read_table(os.path.join(TABLES, "wallTheory"))
+        self.assertEqual(meta["kind"], "wall")
         self.assertEqual(list(funcs), wall.TABLE_FUNCTIONS)
         x = np.array([1e-5, 3.3e-4, 0.0123, 0.2])
-        for name, (g, rem) in funcs.items():
-            f = g[0] / x + (g[1] + g[2] * x) * np.log(1 / x) + np.interp(x, gap, rem)
-            np.testing.assert_allclose(f, wall.function(name, x), rtol=1e-4, err_msg=name)
+        for name, fun in funcs.items():
+            np.testing.assert_allclose(evaluate(fun, gap, x),
+                                       wall.function(name, x), rtol=1e-4,
+                                       err_msg=name)
 
 
 if __name__ == "__main__":
