@@ -77,5 +77,14 @@ expectFatal missingLambdaTolerance $pp 's/lambdaTolerance .*;//' \
     "'lambdaTolerance'"
 expectFatal missingFluidDensity constant/transportProperties 's/^rho .*$//' \
     "'rho'"
+expectFatal unknownSubGridModel $pp '$a subGrid { model fancy; }' \
+    "Unknown subGrid model fancy" "frameInvariant" "none"
+expectFatal missingSubGridTable $pp \
+    '$a subGrid { model frameInvariant; pairTables ("noSuchTable"); }' \
+    "Cannot read the sub-grid table" "noSuchTable" "subGridCalibration"
+expectFatal subGridTableOtherSettings $pp \
+    '$a indicator { b 4; } subGrid { model frameInvariant; }' \
+    "subGridPair_lambda1" "b = 5" "b = 4" "subGridCalibration"
+expectFatal badGapFloor $pp '$a gapFloor 0;' "gapFloor" "0 < gapFloor < 0.1"
 
 [ "$failures" -eq 0 ]

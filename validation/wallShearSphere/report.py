@@ -1,7 +1,12 @@
 #!/usr/bin/env python3
 """Report of the near-wall sheared sphere validation (run.py): mean and
 scatter over the in-plane positions against the references of
-reference.py; writes report.md and wallShearSphere.png."""
+reference.py; writes report.md and wallShearSphere.png.
+
+Targets (set before the runs, from the thesis' "very good agreement" and
+its ~2 % on the three-sphere cases): |error| of the position mean at most
+3 % for U_x and Omega_z, 5 % for S_xy (the Sangani fit is itself
+approximate near contact), for every epsilon with the sub-grid model."""
 
 import os
 import sys
@@ -53,9 +58,12 @@ def main():
                          "| %+.2f %% |" % (e, n, ref[i, j], sg[i, j],
                                           sg_std[i, j], 100 * err[i, j],
                                           fdm[i, j], 100 * err_fdm[i, j]))
+    worst = np.abs(err).max(axis=0)
+    ok = worst[0] <= 0.03 and worst[1] <= 0.03 and worst[2] <= 0.05
     lines += ["", "Largest |error| with the sub-grid model: U_x %.2f %%, "
-              "Omega_z %.2f %%, S_xy %.2f %%."
-              % tuple(100 * np.abs(err).max(axis=0)), "",
+              "Omega_z %.2f %%, S_xy %.2f %% (targets 3, 3, 5 %%)."
+              % tuple(100 * worst), "", "Result: %s" % ("PASS" if ok
+                                                       else "FAIL"), "",
               "References: " + reference.__doc__.strip().split("\n")[0]]
     with open(os.path.join(HERE, "report.md"), "w") as f:
         f.write("\n".join(lines) + "\n")

@@ -12,9 +12,10 @@ position, without it (the FDM alone).  References (reference.py):
 the free-sphere velocities near a single wall in unbounded fluid and the
 stresslet fit of Sangani et al. (2011) (eq 4.9).
 
-    ./run.py [--eps 0.01,0.02,...] [--positions 4] [--jobs 2]
+    ./Allrun [--eps 0.01,0.02,...] [--positions 4] [--jobs 2]
 
-writes results.dat, report.md and wallShearSphere.png here.  The thesis'
+writes results.dat, report.md and wallShearSphere.png here (cases in
+build/validation/wallShearSphere).  The thesis'
 box is 50 a: ours is 10 a, so the top wall (at about 8.5 a) and the
 periodic images (10 a apart) change the velocities by O((a/h)^3), a few
 1e-3; stated with the results.
@@ -70,7 +71,8 @@ def main():
     parser.add_argument("--lambda-tol", type=float, default=1e-6)
     args = parser.parse_args()
     eps_list = [float(e) for e in args.eps.split(",")]
-    work = os.path.join(HERE, "cases")
+    work = os.path.join(os.environ["FDM_PROJECT_DIR"], "build", "validation",
+                        "wallShearSphere")
     jobs = [(e, o, "frameInvariant") for e in eps_list
             for o in offsets(args.positions)]
     jobs += [(e, offsets(1)[0], "none") for e in eps_list]

@@ -10,17 +10,17 @@ Description
     fluid for 10^3, 10^4 and 10^5 particles in a dense periodic packing
     (jittered simple cubic lattice, spacing 2.3 a, phi = 0.34): pair search
     (cell-linked list, gap < 0.3 a), assembly of the particle system
-    (pseudo-mass of eq 2.53 for a = 5 Delta plus one 6x6 coupling block per
-    near pair) and its preconditioned-CG solve (tolerance 1e-6).
-
-    The pair block is a stand-in for the sub-grid matrix of issue 4 with
-    the same sparsity: k (e e^T) on the translational unknowns with
-    k = 6 pi a^2/(4 gap), the leading squeeze-film resistance.  Prints a
-    table of wall times and times per particle.
+    (pseudo-mass of eq 2.53 for a = 5 Delta plus the frame-invariant
+    sub-grid matrix of every near pair, evaluated from the shipped table
+    data/resistance/subGridPair_lambda1) and its preconditioned-CG solve
+    (tolerance 1e-6).  Prints a table of wall times and times per
+    particle.
 
 \*---------------------------------------------------------------------------*/
 
 #include "pairSearch.H"
+#include "pairSubGridMatrix.H"
+#include "resistanceTable.H"
 #include "particleVelocitySystem.H"
 #include "rigidBodyMoments.H"
 #include "clockTime.H"
@@ -40,6 +40,12 @@ int main()
     fdm::rigidBodyMoments sphere;
     sphere.volume = 4.0/3.0*pi*a*a*a;
     sphere.inertia = 0.4*sphere.volume*a*a*symmTensor::I;
+
+    const fdm::resistanceTable table = fdm::resistanceTable::read
+    (
+        fileName("$FDM_PROJECT_DIR/data/resistance/subGridPair_lambda1")
+       .expand()
+    );
 
     Info<< "| N | near pairs | pair search s | assembly s | solve s |"
         << " CG its | total us per particle |" << nl
@@ -81,21 +87,9 @@ int main()
         for (const labelPair& pq : pairs)
         {
             const vector d = box.minimumImage(x[pq.second()] - x[pq.first()]);
-            const scalar gap = max(mag(d) - 2*a, 0.01*a);
-            const vector e = d/mag(d);
-            const scalar k = 6*pi*a*a/(4*gap);
-            for (direction r = 0; r < 3; ++r)
-            {
-                for (direction c = 0; c < 3; ++c)
-                {
-                    const scalar v = k*e[r]*e[c];
-                    const label i = 6*pq.first() + r, j = 6*pq.second() + c;
-                    sys.addEntry(i, 6*pq.first() + c, v);
-                    sys.addEntry(6*pq.second() + r, j, v);
-                    sys.addEntry(i, j, -v);
-                    sys.addEntry(6*pq.second() + r, 6*pq.first() + c, -v);
-                }
-            }
+            const scalar r = mag(d);
+            fdm::pairSubGridMatrix(table.pairFunctions(r/a - 2, a), r, d/r)
+               .addTo(sys, pq.first(), pq.second(), 1);
         }
         const scalar tAssembly = clock.timeIncrement();
 
