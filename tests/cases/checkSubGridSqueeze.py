@@ -14,9 +14,14 @@ change a squeeze flow (a force dipole) by O((a/h)^3): tolerance 3 % with
 the sub-grid correction.  Without it the mesh (Delta = 10 gaps) cannot
 resolve the film and the approach is several times too fast: the test
 requires the uncorrected error to exceed 5 times the corrected one, so a
-correction that does nothing fails.  Rigid-body check: the pair's mean
-velocity vanishes (equal and opposite forces), |U_1 + U_2| below 1e-3 of
-the approach velocity.
+correction that does nothing fails.  Symmetry check: with equal and
+opposite forces the pair's mean velocity vanishes, up to the mesh: the
+two spheres sit at different places in their cells, where the solver's
+resolved resistance differs (position scatter of X_21^A about 12 %,
+subGridCalibration), diluted by the sub-grid part (75 % of the
+resistance at this gap); |U_1 + U_2| below 2 % of the approach velocity
+(measured 0.8 %; a sign error in the sub-grid blocks gives O(1)).
+Measured at writing: 2.2 % with the sub-grid model, 238 % without.
 """
 
 import os
@@ -55,5 +60,5 @@ print("approach velocity: theory %.6g, sub-grid %.6g, FDM alone %.6g"
 check("|U_rel(sub-grid) / U_rel(theory) - 1|", err_sg, 0.03)
 check("error without sub-grid > 5 x error with it",
       5 * err_sg / err_none, 1.0)
-check("|U_1 + U_2| / U_rel", drift / with_sg, 1e-3)
+check("|U_1 + U_2| / U_rel", drift / with_sg, 2e-2)
 checks.finish()
