@@ -8,15 +8,9 @@
 #include "point.H"
 #include "tensor.H"
 
-// Eigen is only used here for eigenvalues; silence its old-style casts
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wold-style-cast"
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <Eigen/Dense>
-#pragma GCC diagnostic pop
-#include <gtest/gtest.h>
+#include "randomGeometry.H"
 
-#include <random>
+#include <gtest/gtest.h>
 
 using namespace Foam;
 using constant::mathematical::pi;
@@ -30,22 +24,17 @@ std::mt19937 rng(20220401);
 
 scalar uniform(const scalar lo, const scalar hi)
 {
-    return std::uniform_real_distribution<scalar>(lo, hi)(rng);
+    return fdmTest::uniform(rng, lo, hi);
 }
 
 vector randomVector(const scalar s = 1)
 {
-    return vector(uniform(-s, s), uniform(-s, s), uniform(-s, s));
+    return fdmTest::randomVector(rng, s);
 }
 
 vector randomUnit()
 {
-    vector v(Zero);
-    while (mag(v) < 0.1)
-    {
-        v = randomVector();
-    }
-    return v/mag(v);
+    return fdmTest::randomUnit(rng);
 }
 
 symmTensor randomSymm()
