@@ -2,8 +2,9 @@
 # Case test: two free spheres (a = 1, Delta = a/5) at a surface gap of
 # 0.02 a, pushed together by equal and opposite forces, walls at x = +-5,
 # cyclic in y and z.  Solved with the frameInvariant sub-grid lubrication
-# and without it; checkSubGridSqueeze.py compares the approach velocity
-# with the two-sphere theory (Jeffrey & Onishi 1984).
+# and without it, and with it on 2 ranks; checkSubGridSqueeze.py compares
+# the approach velocity with the two-sphere theory (Jeffrey & Onishi 1984)
+# and the parallel run with the serial one.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir subGridSqueeze)
@@ -17,5 +18,13 @@ do
         runLogged blockMesh && runLogged fdmSuspensionFoam
     ) || exit 1
 done
+
+# With the sub-grid model on 2 ranks, cut through the gap
+cloneCase subGridSqueeze "$work/parallel"
+(
+    cd "$work/parallel" || exit 1
+    runLogged blockMesh && runLogged decomposePar \
+        && runParallel2 fdmSuspensionFoam
+) || exit 1
 
 "$FDM_PYTHON" "$caseTemplates/checkSubGridSqueeze.py" "$work"
