@@ -4,25 +4,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "pairSubGridMatrix.H"
+#include "resistanceTensorForms.H"
 #include "particleVelocitySystem.H"
 #include "error.H"
-
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * * //
-
-namespace
-{
-
-using Foam::scalar;
-using Foam::label;
-
-//- Levi-Civita symbol eps_ijk
-inline scalar leviCivita(const label i, const label j, const label k)
-{
-    return scalar((i - j)*(j - k)*(k - i))/2;
-}
-
-} // namespace
-
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
@@ -134,30 +118,14 @@ Foam::fdm::pairSubGridMatrix::pairSubGridMatrix
     {
         for (label b = 0; b < 2; ++b)
         {
-            for (label i = 0; i < 3; ++i)
-            {
-                for (label j = 0; j < 3; ++j)
-                {
-                    const scalar dd = d_[i]*d_[j];
-                    const scalar perp = (i == j ? 1 : 0) - dd;
-                    scalar epsD = 0;
-                    for (label k = 0; k < 3; ++k)
-                    {
-                        epsD += leviCivita(i, j, k)*d_[k];
-                    }
-
-                    // Force row, U column: A
-                    R_[6*a + i][6*b + j] =
-                        f_.XA[a][b]*dd + f_.YA[a][b]*perp;
-                    // Force row, Omega column: B~
-                    R_[6*a + i][6*b + 3 + j] = f_.YBt[a][b]*epsD;
-                    // Torque row, U column: B
-                    R_[6*a + 3 + i][6*b + j] = f_.YB[a][b]*epsD;
-                    // Torque row, Omega column: C
-                    R_[6*a + 3 + i][6*b + 3 + j] =
-                        f_.XC[a][b]*dd + f_.YC[a][b]*perp;
-                }
-            }
+            // Force row: A (U column), B~ (Omega column); torque row: B, C
+            setBlock(R_, 6*a, 6*b, axialForm(f_.XA[a][b], f_.YA[a][b], d_));
+            setBlock(R_, 6*a, 6*b + 3, epsilonForm(f_.YBt[a][b], d_));
+            setBlock(R_, 6*a + 3, 6*b, epsilonForm(f_.YB[a][b], d_));
+            setBlock
+            (
+                R_, 6*a + 3, 6*b + 3, axialForm(f_.XC[a][b], f_.YC[a][b], d_)
+            );
         }
     }
 }
@@ -202,11 +170,7 @@ Foam::symmTensor Foam::fdm::pairSubGridMatrix::G
     const vector& U
 ) const
 {
-    // G_ijk U_k = X^G (U.d)(d d - I/3) + Y^G (d U + U d - 2 (U.d) d d)
-    const scalar Ud = U & d_;
-    return
-        f_.XG[a][b]*Ud*(sqr(d_) - symmTensor::I/3)
-      + f_.YG[a][b]*(twoSymm(d_*U) - 2*Ud*sqr(d_));
+    return contractG(f_.XG[a][b], f_.YG[a][b], d_, U);
 }
 
 
@@ -217,9 +181,7 @@ Foam::symmTensor Foam::fdm::pairSubGridMatrix::H
     const vector& W
 ) const
 {
-    // H_ijk W_k = Y^H (d_i eps_jkm W_k d_m + d_j eps_ikm W_k d_m)
-    //           = Y^H (d (W x d) + (W x d) d)
-    return f_.YH[a][b]*twoSymm(d_*(W ^ d_));
+    return contractH(f_.YH[a][b], d_, W);
 }
 
 
@@ -252,12 +214,7 @@ Foam::vector Foam::fdm::pairSubGridMatrix::strainForce
     const symmTensor& E
 ) const
 {
-    // G~_ijk E_jk = X~^G (d.E.d - tr(E)/3) d + 2 Y~^G (E.d - (d.E.d) d)
-    const vector Ed = E & d_;
-    const scalar dEd = d_ & Ed;
-    return
-        f_.XGt[a][b]*(dEd - tr(E)/3)*d_
-      + 2*f_.YGt[a][b]*(Ed - dEd*d_);
+    return strainContractG(f_.XGt[a][b], f_.YGt[a][b], d_, E);
 }
 
 
@@ -268,9 +225,7 @@ Foam::vector Foam::fdm::pairSubGridMatrix::strainTorque
     const symmTensor& E
 ) const
 {
-    // H~_ijk E_jk = Y~^H (d_j eps_kim + d_k eps_jim) d_m E_jk
-    //             = 2 Y~^H d x (E.d)
-    return 2*f_.YHt[a][b]*(d_ ^ (E & d_));
+    return strainContractH(f_.YHt[a][b], d_, E);
 }
 
 

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "wallSubGridMatrix.H"
+#include "resistanceTensorForms.H"
 #include "particleVelocitySystem.H"
 #include "error.H"
 
@@ -58,27 +59,11 @@ Foam::fdm::wallSubGridMatrix::wallSubGridMatrix
     }
     d_ /= magD;
 
-    for (label i = 0; i < 3; ++i)
-    {
-        for (label j = 0; j < 3; ++j)
-        {
-            const scalar dd = d_[i]*d_[j];
-            const scalar perp = (i == j ? 1 : 0) - dd;
-
-            // eps_ijk d_k
-            const label k = 3 - i - j;
-            scalar epsD = 0;
-            if (i != j)
-            {
-                epsD = scalar((i - j)*(j - k)*(k - i))/2*d_[k];
-            }
-
-            R_[i][j] = f_.XA*dd + f_.YA*perp;
-            R_[i][3 + j] = f_.YBt*epsD;
-            R_[3 + i][j] = f_.YB*epsD;
-            R_[3 + i][3 + j] = f_.XC*dd + f_.YC*perp;
-        }
-    }
+    // Appendix A (11) forms: force row A, B~; torque row B, C
+    setBlock(R_, 0, 0, axialForm(f_.XA, f_.YA, d_));
+    setBlock(R_, 0, 3, epsilonForm(f_.YBt, d_));
+    setBlock(R_, 3, 0, epsilonForm(f_.YB, d_));
+    setBlock(R_, 3, 3, axialForm(f_.XC, f_.YC, d_));
 }
 
 
@@ -121,15 +106,7 @@ Foam::symmTensor Foam::fdm::wallSubGridMatrix::stresslet
     const vector& Uw
 ) const
 {
-    // Appendix A (11) forms, as in pairSubGridMatrix::G, H
-    const vector Ur(U - Uw);
-    const scalar Ud = Ur & d_;
-    return
-      -(
-            f_.XG*Ud*(sqr(d_) - symmTensor::I/3)
-          + f_.YG*(twoSymm(d_*Ur) - 2*Ud*sqr(d_))
-          + f_.YH*twoSymm(d_*(W ^ d_))
-        );
+    return -(contractG(f_.XG, f_.YG, d_, U - Uw) + contractH(f_.YH, d_, W));
 }
 
 
@@ -150,9 +127,7 @@ Foam::vector Foam::fdm::wallSubGridMatrix::strainForce
 {
     // X^G~ = X^G, Y^G~ = Y^G (reciprocity; verified for the FDM matrix in
     // section 3.4)
-    const vector Ed = E & d_;
-    const scalar dEd = d_ & Ed;
-    return f_.XG*(dEd - tr(E)/3)*d_ + 2*f_.YG*(Ed - dEd*d_);
+    return strainContractG(f_.XG, f_.YG, d_, E);
 }
 
 
@@ -162,7 +137,7 @@ Foam::vector Foam::fdm::wallSubGridMatrix::strainTorque
 ) const
 {
     // Y^H~ = Y^H
-    return 2*f_.YH*(d_ ^ (E & d_));
+    return strainContractH(f_.YH, d_, E);
 }
 
 
