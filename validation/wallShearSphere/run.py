@@ -32,20 +32,13 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
 sys.path.insert(0, HERE)
-from fdmPost.caseRunner import fill_template, run_case, vec  # noqa: E402
+from fdmPost.caseRunner import (cell_offsets, fill_template,  # noqa: E402
+                                run_case, vec)
 
 DELTA = 0.2
 L = 10.0
 H = 10.0
 S_SCALE = 10.0 / 3.0 * np.pi
-
-
-def offsets(count):
-    """In-plane (x, z) offsets inside a cell, in units of Delta: a fixed
-    spread of the 4 x 4 lattice."""
-    lattice = [(i, k) for i in range(4) for k in range(4)]
-    order = np.random.RandomState(2022).permutation(len(lattice))
-    return [np.array(lattice[i], float) / 4.0 for i in order[:count]]
 
 
 def solve(eps, offset, model, work, lambda_tol):
@@ -74,8 +67,8 @@ def main():
     work = os.path.join(os.environ["FDM_PROJECT_DIR"], "build", "validation",
                         "wallShearSphere")
     jobs = [(e, o, "frameInvariant") for e in eps_list
-            for o in offsets(args.positions)]
-    jobs += [(e, offsets(1)[0], "none") for e in eps_list]
+            for o in cell_offsets(args.positions, 2)]
+    jobs += [(e, cell_offsets(1, 2)[0], "none") for e in eps_list]
     results = {}
     with concurrent.futures.ProcessPoolExecutor(args.jobs) as pool:
         futures = {pool.submit(solve, e, o, m, work, args.lambda_tol):

@@ -1,6 +1,7 @@
 """Make and run small fdmSuspensionFoam cases from a template: the
 measurement loops of the sub-grid calibration and of the validations.
 
+cell_offsets   positions inside a mesh cell to average over
 fill_template  copy a template case and replace its @TOKENS@
 run_case       blockMesh + fdmSuspensionFoam; the last particles.h5 record
 read_last_record   that record of a case already run
@@ -16,6 +17,16 @@ import numpy as np
 def vec(v):
     """OpenFOAM vector text of a 3-sequence, full precision."""
     return "(%s)" % " ".join("%.17g" % c for c in v)
+
+
+def cell_offsets(count, dims):
+    """count offsets inside one mesh cell, in units of Delta: a fixed
+    spread (seeded permutation) of the 4^dims lattice of quarter cells
+    (thesis: 4 x 4 x 4 for pairs, 4 x 4 in a plane near a wall).  Arrays of
+    length dims."""
+    lattice = np.array(list(np.ndindex(*(4,) * dims)), float) / 4.0
+    order = np.random.RandomState(2022).permutation(len(lattice))
+    return [lattice[i] for i in order[:count]]
 
 
 def fill_template(template, case, tokens):
