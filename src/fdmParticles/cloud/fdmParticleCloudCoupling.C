@@ -130,11 +130,6 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
 
     buildStencils();
     subGrid_->update(position_, radius_, box_);
-    if (subGrid_->type() != noSubGrid::typeName)
-    {
-        Info<< "Sub-grid lubrication: " << subGrid_->nPairs() << " pairs, "
-            << subGrid_->nWallGaps() << " particle-wall gaps" << endl;
-    }
 
     // lambda is not advected (thesis 2.4, step 2): keep it where a support
     // still covers the cell as the initial guess, zero elsewhere.

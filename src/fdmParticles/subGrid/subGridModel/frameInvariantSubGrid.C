@@ -268,10 +268,22 @@ void Foam::frameInvariantSubGrid::update
         );
     }
 
-    if (walls_.empty())
+    if (!walls_.empty())
     {
-        return;
+        updateWallGaps(positions, radii);
     }
+
+    Info<< "Sub-grid lubrication: " << nPairs() << " pairs, " << nWallGaps()
+        << " particle-wall gaps" << endl;
+}
+
+
+void Foam::frameInvariantSubGrid::updateWallGaps
+(
+    const pointField& positions,
+    const scalarField& radii
+)
+{
     const volVectorField& U = mesh_.lookupObject<volVectorField>("U");
     for (const planeWall& w : walls_)
     {
