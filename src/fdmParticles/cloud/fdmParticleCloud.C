@@ -285,11 +285,10 @@ Foam::fdmParticleCloud::fdmParticleCloud
     stresslet_.setSize(size(), Zero);
     dipoleTrace_.setSize(size(), Zero);
     moments_.setSize(size());
+    contactForce_.setSize(size(), Zero);
+    contactTorque_.setSize(size(), Zero);
+    contactStresslet_.setSize(size(), Zero);
 
-    readState();
-
-    // One floor on the reduced gaps xi and epsilon for the sub-grid
-    // lubrication and the contact barrier (eq 2.57; spec 12.35)
     const scalar gapFloor = dict_.getOrDefault<scalar>("gapFloor", 1e-5);
     if (!(gapFloor > 0 && gapFloor < 0.1))
     {
@@ -298,6 +297,15 @@ Foam::fdmParticleCloud::fdmParticleCloud
             << ": allowed values are 0 < gapFloor < 0.1 (floor on the "
             << "reduced surface gaps; thesis 1e-5)" << exit(FatalIOError);
     }
+    contacts_ = particleContacts::New
+    (
+        dict_, mesh_, radius_, rhoFluid_*nu_, gapFloor
+    );
+
+    readState();
+
+    // One floor on the reduced gaps xi and epsilon for the sub-grid
+    // lubrication and the contact barrier (eq 2.57; spec 12.35)
     subGrid_ = subGridModel::New
     (
         dict_,

@@ -130,6 +130,14 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
 
     buildStencils();
     subGrid_->update(position_, radius_, box_);
+    if (contacts_)
+    {
+        contacts_->update(position_, radius_, box_);
+        contacts_->report();
+        contactForce_ = contacts_->forces();
+        contactTorque_ = contacts_->torques();
+        contactStresslet_ = contacts_->stresslets();
+    }
 
     // lambda is not advected (thesis 2.4, step 2): keep it where a support
     // still covers the cell as the initial guess, zero elsewhere.
@@ -163,6 +171,10 @@ void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
             << abort(FatalError);
     }
 
+    if (contacts_)
+    {
+        contacts_->advance(position_, radius_, U_, Omega_, box_, deltaT);
+    }
     forAll(position_, p)
     {
         const point x =
@@ -262,8 +274,9 @@ Foam::scalar Foam::fdmParticleCloud::correct
         system_.addRhs
         (
             p,
-            fu/alphaLambda_ - fl + bodyForce(p),
-            tu/alphaLambda_ - tl + g.torque()/rhoFluid_
+            fu/alphaLambda_ - fl + bodyForce(p) + contactForce_[p]/rhoFluid_,
+            tu/alphaLambda_ - tl
+          + (g.torque() + contactTorque_[p])/rhoFluid_
         );
         for (direction d = 0; d < 3; ++d)
         {

@@ -50,6 +50,13 @@ void Foam::fdmParticleCloud::writeState() const
     os.writeEntry("torque", torque_);
     os.writeEntry("stresslet", stresslet_);
     os.writeEntry("dipoleTrace", dipoleTrace_);
+    if (contacts_)
+    {
+        os.writeEntry("contactForce", contactForce_);
+        os.writeEntry("contactTorque", contactTorque_);
+        os.writeEntry("contactStresslet", contactStresslet_);
+        contacts_->writeState(os);
+    }
     IOobject::writeEndDivider(os);
 }
 
@@ -62,8 +69,11 @@ void Foam::fdmParticleCloud::writeTimeSeries()
     }
     timeSeries_->append
     (
-        mesh_.time().value(), position_, U_, Omega_, force_, torque_,
-        stresslet_, dipoleTrace_
+        mesh_.time().value(),
+        {
+            position_, U_, Omega_, force_, torque_, stresslet_, dipoleTrace_,
+            contactForce_, contactTorque_, contactStresslet_
+        }
     );
 }
 
@@ -125,6 +135,7 @@ void Foam::fdmParticleCloud::writeVTK() const
         writeVectors("angularVelocity", Omega_);
         writeVectors("force", force_);
         writeVectors("torque", torque_);
+        writeVectors("contactForce", contactForce_);
     }
 
     // Series file listing every particles_<time>.vtk present, by time

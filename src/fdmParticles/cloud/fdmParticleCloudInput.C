@@ -251,6 +251,10 @@ void Foam::fdmParticleCloud::readState()
     torque_ = state.get<List<vector>>("torque");
     state.readIfPresent("stresslet", stresslet_);
     state.readIfPresent("dipoleTrace", dipoleTrace_);
+    if (contacts_)
+    {
+        contacts_->readState(state);
+    }
     solved_ = state.get<bool>("solved");
     hasHistory_ = state.get<bool>("hasHistory");
     firstSolveDone_ = solved_;

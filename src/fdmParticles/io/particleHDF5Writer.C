@@ -101,7 +101,8 @@ struct seriesShape
 const seriesShape series[] =
 {
     {"position", 3}, {"velocity", 3}, {"angularVelocity", 3},
-    {"force", 3}, {"torque", 3}, {"stresslet", 6}, {"dipoleTrace", 1}
+    {"force", 3}, {"torque", 3}, {"stresslet", 6}, {"dipoleTrace", 1},
+    {"contactForce", 3}, {"contactTorque", 3}, {"contactStresslet", 6}
 };
 
 std::vector<hsize_t> recordShape(const hsize_t n, const seriesShape& s)
@@ -240,32 +241,35 @@ void Foam::particleHDF5Writer::appendVectors
 }
 
 
-void Foam::particleHDF5Writer::append
+void Foam::particleHDF5Writer::appendSymmTensors
 (
-    const scalar time,
-    const List<vector>& position,
-    const List<vector>& velocity,
-    const List<vector>& angularVelocity,
-    const List<vector>& force,
-    const List<vector>& torque,
-    const List<symmTensor>& stresslet,
-    const List<scalar>& dipoleTrace
+    const char* name,
+    const List<symmTensor>& s
 )
+{
+    // Foam::symmTensor is six contiguous doubles (xx xy xz yy yz zz)
+    appendRecord(hid_t(file_), name,
+        reinterpret_cast<const double*>(s.cdata()));
+}
+
+
+void Foam::particleHDF5Writer::append(const scalar time, const record& r)
 {
     if (file_ < 0)
     {
         return;
     }
     appendRecord(hid_t(file_), "time", &time);
-    appendVectors("position", position);
-    appendVectors("velocity", velocity);
-    appendVectors("angularVelocity", angularVelocity);
-    appendVectors("force", force);
-    appendVectors("torque", torque);
-    // Foam::symmTensor is six contiguous doubles (xx xy xz yy yz zz)
-    appendRecord(hid_t(file_), "stresslet",
-        reinterpret_cast<const double*>(stresslet.cdata()));
-    appendRecord(hid_t(file_), "dipoleTrace", dipoleTrace.cdata());
+    appendVectors("position", r.position);
+    appendVectors("velocity", r.velocity);
+    appendVectors("angularVelocity", r.angularVelocity);
+    appendVectors("force", r.force);
+    appendVectors("torque", r.torque);
+    appendSymmTensors("stresslet", r.stresslet);
+    appendRecord(hid_t(file_), "dipoleTrace", r.dipoleTrace.cdata());
+    appendVectors("contactForce", r.contactForce);
+    appendVectors("contactTorque", r.contactTorque);
+    appendSymmTensors("contactStresslet", r.contactStresslet);
     H5Fflush(hid_t(file_), H5F_SCOPE_LOCAL);
 }
 

@@ -6,7 +6,6 @@
 #include "frameInvariantSubGrid.H"
 #include "addToRunTimeSelectionTable.H"
 #include "pairSearch.H"
-#include "wallPolyPatch.H"
 #include "volFields.H"
 #include "surfaceFields.H"
 #include "IFstream.H"
@@ -98,36 +97,6 @@ Foam::frameInvariantSubGrid::pairTable(const scalar lambda) const
 }
 
 
-void Foam::frameInvariantSubGrid::findWalls()
-{
-    DynamicList<planeWall> walls;
-    for (const polyPatch& pp : mesh_.boundaryMesh())
-    {
-        const label nFaces = returnReduce(pp.size(), sumOp<label>());
-        if (!isA<wallPolyPatch>(pp) || nFaces == 0)
-        {
-            continue;
-        }
-        const vectorField nf(pp.faceNormals());
-        const vector n = normalised(gSum(nf));
-        // Plane: one normal and all face centres on one plane (gMax of an
-        // empty local list is -GREAT: ranks without faces do not count)
-        const scalar bend = gMax(mag(nf - n));
-        const point origin = gSum(pp.faceCentres())/nFaces;
-        const scalar offPlane = gMax(mag((pp.faceCentres() - origin) & n));
-        if (bend > 1e-6 || offPlane > 1e-6*cbrt(gSum(mesh_.V())))
-        {
-            FatalErrorInFunction
-                << "Wall patch " << pp.name() << " is not a plane: the "
-                << "sub-grid wall lubrication (frameInvariant) supports "
-                << "plane walls only" << exit(FatalError);
-        }
-        walls.append(planeWall{pp.name(), n, origin, pp.index()});
-    }
-    walls_.transfer(walls);
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::frameInvariantSubGrid::frameInvariantSubGrid
@@ -172,9 +141,12 @@ Foam::frameInvariantSubGrid::frameInvariantSubGrid
 
     if (dict.getOrDefault<bool>("walls", true))
     {
-        findWalls();
+        walls_.reset
+        (
+            new planeWalls(mesh, "sub-grid wall lubrication (frameInvariant)")
+        );
     }
-    if (!walls_.empty())
+    if (walls_ && !walls_->empty())
     {
         wallTable_ = readTable
         (
@@ -224,8 +196,8 @@ Foam::frameInvariantSubGrid::frameInvariantSubGrid
     }
 
     Info<< "Sub-grid lubrication: frameInvariant, " << pairTables_.size()
-        << " pair table(s), " << walls_.size() << " plane wall(s), gap "
-        << "floor " << s.gapFloor << endl;
+        << " pair table(s), " << (walls_ ? walls_->size() : 0)
+        << " plane wall(s), gap floor " << s.gapFloor << endl;
 }
 
 
@@ -268,7 +240,7 @@ void Foam::frameInvariantSubGrid::update
         );
     }
 
-    if (!walls_.empty())
+    if (walls_ && !walls_->empty())
     {
         updateWallGaps(positions, radii);
     }
@@ -284,16 +256,12 @@ void Foam::frameInvariantSubGrid::updateWallGaps
     const scalarField& radii
 )
 {
-    const volVectorField& U = mesh_.lookupObject<volVectorField>("U");
-    for (const planeWall& w : walls_)
+    for (const planeWalls::wall& w : walls_->walls())
     {
-        // The wall moves rigidly (moving-wall fixedValue): its mean velocity
-        const scalarField& magSf = mesh_.boundary()[w.patch].magSf();
-        const vectorField& Ub = U.boundaryField()[w.patch];
-        const vector Uw = gSum(Ub*magSf)/gSum(magSf);
+        const vector Uw = walls_->velocity(w);
         forAll(positions, p)
         {
-            const scalar h = (w.origin - positions[p]) & w.normal;
+            const scalar h = w.distance(positions[p]);
             const scalar epsilon = h/radii[p] - 1;
             if (epsilon > wallCutoff_)
             {

@@ -1,0 +1,235 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "contactLaw.H"
+#include "mathematicalConstants.H"
+
+namespace Foam
+{
+namespace fdm
+{
+    defineTypeNameAndDebug(contactLaw, 0);
+    defineRunTimeSelectionTable(contactLaw, dictionary);
+}
+}
+
+
+// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::fdm::contactLaw::readBounded
+(
+    const dictionary& dict,
+    const word& key,
+    const scalar lo,
+    const scalar hi,
+    const string& meaning
+)
+{
+    if (!dict.found(key))
+    {
+        FatalIOErrorInFunction(dict)
+            << "Missing keyword " << key << " in " << dict.name() << ": "
+            << meaning << exit(FatalIOError);
+    }
+    const scalar x = dict.get<scalar>(key);
+    if (!(x >= lo && x < hi))
+    {
+        FatalIOErrorInFunction(dict)
+            << key << ' ' << x << " in " << dict.name()
+            << ": allowed values are " << lo << " <= " << key << " < " << hi
+            << " (" << meaning << ")" << exit(FatalIOError);
+    }
+    return x;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdm::contactLaw::contactLaw(const dictionary& dict, const scales& s)
+:
+    roughness_
+    (
+        s.a1*readBounded
+        (
+            dict, "roughness", VSMALL, 0.1,
+            "asperity height h_r/a_1, a_1 the smallest radius; thesis 5e-3"
+        )
+    ),
+    kn_(0),
+    friction_
+    (
+        readBounded(dict, "friction", 0, GREAT, "Coulomb coefficient mu")
+    ),
+    shearRate_(0)
+{
+    const bool direct = dict.found("kn");
+    const bool rule = dict.found("meanDeformation");
+    if (direct == rule)
+    {
+        FatalIOErrorInFunction(dict)
+            << "Give the contact stiffness in " << dict.name() << " either"
+            << " as kn [N/m^1.5] or as shearRate and meanDeformation"
+            << " (thesis 2.6: 6 pi eta shearRate a_1^2 = kn (meanDeformation"
+            << " h_r)^1.5, meanDeformation < 0.2 typical), not "
+            << (direct ? "both" : "neither") << exit(FatalIOError);
+    }
+    if (direct)
+    {
+        kn_ = readBounded(dict, "kn", VSMALL, GREAT, "Hertz stiffness k_n");
+    }
+    else
+    {
+        shearRate_ =
+            readBounded
+            (
+                dict, "shearRate", VSMALL, GREAT,
+                "reference shear rate gammaDot_0 of the stiffness rule"
+            );
+        const scalar eps =
+            readBounded
+            (
+                dict, "meanDeformation", VSMALL, 1,
+                "mean asperity deformation over h_r, thesis < 0.2"
+            );
+        kn_ =
+            6*constant::mathematical::pi*s.eta*shearRate_*sqr(s.a1)
+           /pow(eps*roughness_, 1.5);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * * Selector  * * * * * * * * * * * * * * * //
+
+Foam::autoPtr<Foam::fdm::contactLaw> Foam::fdm::contactLaw::New
+(
+    const dictionary& dict,
+    const scales& s
+)
+{
+    const word model(dict.getOrDefault<word>("model", "hertz"));
+
+    auto cstrIter = dictionaryConstructorTablePtr_->cfind(model);
+    if (!cstrIter.found())
+    {
+        FatalIOErrorInFunction(dict)
+            << "Unknown contact model " << model << " in " << dict.name()
+            << nl << "    allowed: "
+            << dictionaryConstructorTablePtr_->sortedToc()
+            << exit(FatalIOError);
+    }
+    return cstrIter()(dict, s);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::scalar Foam::fdm::contactLaw::elasticNormalForce
+(
+    const scalar gap,
+    const scalar floorGap
+) const
+{
+    if (!touching(gap))
+    {
+        return 0;
+    }
+    const scalar delta = roughness_ - gap;
+    const scalar d = floorGap/roughness_;
+    // Distance to the floor in units of h_r, kept positive: at 1e-6 the
+    // barrier multiplies the Hertz force by about 1e5
+    const scalar x = max(gap/roughness_ - d, 1e-6);
+    const scalar barrier = (1 - std::exp(10*(d - 1)))/(-std::expm1(-10*x));
+    return kn_*pow(delta, 1.5)*barrier;
+}
+
+
+Foam::fdm::contactForce Foam::fdm::contactLaw::evaluate
+(
+    const contactGeometry& g,
+    vector& slip
+) const
+{
+    contactForce c{Zero, Zero, 0, false, g.gap < g.floorGap};
+    if (!touching(g.gap))
+    {
+        slip = Zero;
+        return c;
+    }
+
+    c.elasticNormal = elasticNormalForce(g.gap, g.floorGap);
+    const scalar net = c.elasticNormal - adhesionForce();
+
+    // Spring on the slip (eqs 2.59-2.60), Coulomb cap on the elastic part
+    // (eqs 2.63, 5.2)
+    slip = rotateIntoTangentPlane(slip, g.normal);
+    const scalar delta = roughness_ - g.gap;
+    const scalar limit = friction_*c.elasticNormal;
+    if (delta > 0 && c.elasticNormal > 0)
+    {
+        const scalar kt = (2.0/7.0)*c.elasticNormal/delta;
+        c.tangential = -kt*slip;
+        const scalar magFt = mag(c.tangential);
+        if (magFt > limit)
+        {
+            c.sliding = true;
+            c.tangential *= limit/magFt;
+            slip = -c.tangential/kt;
+        }
+    }
+    else
+    {
+        // At the onset (delta = 0) there is no stiffness yet
+        slip = Zero;
+    }
+
+    // The normal force pushes i away from j
+    c.force = -net*g.normal + c.tangential;
+    return c;
+}
+
+
+void Foam::fdm::contactLaw::writeInfo(Ostream& os) const
+{
+    os  << "    contact " << type() << ": h_r = " << roughness_
+        << ", k_n = " << kn_ << ", mu = " << friction_;
+    if (adhesionForce() > 0)
+    {
+        os  << ", F_adh = " << adhesionForce();
+    }
+    os  << nl;
+}
+
+
+// * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+Foam::vector Foam::fdm::slipVelocity
+(
+    const vector& n,
+    const vector& Ui,
+    const vector& Omegai,
+    const scalar ai,
+    const vector& Uj,
+    const vector& Omegaj,
+    const scalar aj
+)
+{
+    const vector dU = Ui - Uj;
+    return dU - (dU & n)*n + ((ai*Omegai + aj*Omegaj) ^ n);
+}
+
+
+Foam::vector Foam::fdm::rotateIntoTangentPlane
+(
+    const vector& slip,
+    const vector& n
+)
+{
+    const vector t = slip - (slip & n)*n;
+    const scalar magT = mag(t);
+    return magT > VSMALL ? (mag(slip)/magT)*t : vector(Zero);
+}
+
+
+// ************************************************************************* //

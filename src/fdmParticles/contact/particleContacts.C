@@ -1,0 +1,274 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "particleContacts.H"
+#include "pairSearch.H"
+#include "contactLoads.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Action>
+void Foam::particleContacts::forEachContact
+(
+    const pointField& positions,
+    const scalarField& radii,
+    const fdm::periodicBox& box,
+    const Action& action
+) const
+{
+    // action(key, geometry, arm of i, arm of j, wall or -1): the arm is the
+    // distance from the centre to the contact point along n, the weight
+    // a_i r/(a_i + a_j) of eqs 2.64 and 2.69
+    DynamicList<labelPair> near;
+    fdm::findNearPairs(box, positions, radii, law_->roughness(), near);
+    for (const labelPair& pq : near)
+    {
+        const label i = pq.first(), j = pq.second();
+        const vector r = box.minimumImage(positions[j] - positions[i]);
+        const scalar d = mag(r);
+        const scalar sum = radii[i] + radii[j];
+        const fdm::contactGeometry g{r/d, d - sum, 0.5*gapFloor_*sum};
+        if (law_->touching(g.gap))
+        {
+            action(key(i, j), g, radii[i]*d/sum, radii[j]*d/sum, -1);
+        }
+    }
+    forAll(walls_.walls(), w)
+    {
+        const planeWalls::wall& wall = walls_.walls()[w];
+        forAll(positions, i)
+        {
+            const fdm::contactGeometry g
+            {
+                wall.normal,
+                wall.distance(positions[i]) - radii[i],
+                gapFloor_*radii[i]
+            };
+            if (law_->touching(g.gap))
+            {
+                action(key(i, -1 - w), g, radii[i], 0, w);
+            }
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::particleContacts::particleContacts
+(
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const fdm::contactLaw::scales& s,
+    const scalar gapFloor,
+    const label nParticles
+)
+:
+    mesh_(mesh),
+    law_(fdm::contactLaw::New(dict, s)),
+    walls_(mesh, "particle-wall contact"),
+    gapFloor_(gapFloor),
+    force_(nParticles, Zero),
+    torque_(nParticles, Zero),
+    stresslet_(nParticles, Zero),
+    nPairs_(0),
+    nWalls_(0),
+    nSliding_(0),
+    nBelowFloor_(0),
+    minGap_(GREAT)
+{
+    law_->writeInfo(Info);
+    Info<< "    contacts with " << walls_.size() << " plane wall(s)" << nl;
+}
+
+
+Foam::autoPtr<Foam::particleContacts> Foam::particleContacts::New
+(
+    const dictionary& particleProperties,
+    const fvMesh& mesh,
+    const scalarField& radii,
+    const scalar eta,
+    const scalar gapFloor
+)
+{
+    if (!particleProperties.found("contact"))
+    {
+        return nullptr;
+    }
+    return autoPtr<particleContacts>::New
+    (
+        particleProperties.subDict("contact"),
+        mesh,
+        fdm::contactLaw::scales{radii.empty() ? 1 : min(radii), eta},
+        gapFloor,
+        radii.size()
+    );
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::particleContacts::update
+(
+    const pointField& positions,
+    const scalarField& radii,
+    const fdm::periodicBox& box
+)
+{
+    force_ = Zero;
+    torque_ = Zero;
+    stresslet_ = Zero;
+    nPairs_ = nWalls_ = nSliding_ = nBelowFloor_ = 0;
+    minGap_ = GREAT;
+
+    std::map<key, vector> current;
+    forEachContact
+    (
+        positions, radii, box,
+        [&](const key& k, const fdm::contactGeometry& g, const scalar armI,
+            const scalar armJ, const label wall)
+        {
+            const auto old = slip_.find(k);
+            vector slip = old == slip_.end() ? vector::zero : old->second;
+            const fdm::contactForce c = law_->evaluate(g, slip);
+            current[k] = slip;
+
+            fdm::addContactLoads
+            (
+                c, g.normal, armI, armJ, k.first, wall < 0 ? k.second : -1,
+                force_, torque_, stresslet_
+            );
+            ++(wall < 0 ? nPairs_ : nWalls_);
+            nSliding_ += c.sliding;
+            nBelowFloor_ += c.belowFloor;
+            minGap_ = min(minGap_, g.gap);
+        }
+    );
+    slip_.swap(current);
+
+    if (nContacts() && minGap_ < -law_->roughness())
+    {
+        FatalErrorInFunction
+            << "Runaway overlap at time " << mesh_.time().timeName()
+            << ": surfaces overlap by " << -minGap_ << ", more than the"
+            << " asperity height h_r = " << law_->roughness() << nl
+            << "    The contact barrier (eq 2.57) was crossed within one"
+            << " time step.  Reduce deltaT in system/controlDict, or"
+            << " soften the contacts (larger meanDeformation or smaller kn"
+            << " in constant/particleProperties contact).  The last written"
+            << " time is the last good state." << exit(FatalError);
+    }
+    if (nBelowFloor_)
+    {
+        WarningInFunction
+            << nBelowFloor_ << " contact gap(s) below the barrier floor"
+            << " (gapFloor) at time " << mesh_.time().timeName()
+            << ", smallest gap " << minGap_ << ": their force is evaluated"
+            << " at the floor.  Reduce deltaT if this repeats." << endl;
+    }
+}
+
+
+void Foam::particleContacts::advance
+(
+    const pointField& positions,
+    const scalarField& radii,
+    const List<vector>& U,
+    const List<vector>& Omega,
+    const fdm::periodicBox& box,
+    const scalar dt
+)
+{
+    if (slip_.empty())
+    {
+        return;
+    }
+    List<vector> wallVelocity(walls_.size());
+    forAll(walls_.walls(), w)
+    {
+        wallVelocity[w] = walls_.velocity(walls_.walls()[w]);
+    }
+
+    forEachContact
+    (
+        positions, radii, box,
+        [&](const key& k, const fdm::contactGeometry& g, const scalar,
+            const scalar, const label wall)
+        {
+            const auto it = slip_.find(k);
+            if (it == slip_.end())
+            {
+                return;
+            }
+            const label i = k.first;
+            const vector Us =
+                wall < 0
+              ? fdm::slipVelocity
+                (
+                    g.normal, U[i], Omega[i], radii[i],
+                    U[k.second], Omega[k.second], radii[k.second]
+                )
+              : fdm::slipVelocity
+                (
+                    g.normal, U[i], Omega[i], radii[i],
+                    wallVelocity[wall], Zero, 0
+                );
+            it->second += dt*Us;
+        }
+    );
+}
+
+
+void Foam::particleContacts::report() const
+{
+    Info<< "Contacts: " << nPairs_ << " pairs, " << nWalls_ << " with walls, "
+        << nSliding_ << " sliding";
+    if (nContacts())
+    {
+        Info<< ", smallest gap " << minGap_;
+    }
+    Info<< endl;
+}
+
+
+void Foam::particleContacts::writeState(Ostream& os) const
+{
+    List<labelPair> keys(slip_.size());
+    List<vector> slips(slip_.size());
+    label n = 0;
+    for (const auto& e : slip_)
+    {
+        keys[n] = labelPair(e.first.first, e.first.second);
+        slips[n] = e.second;
+        ++n;
+    }
+    os.writeEntry("contactPairs", keys);
+    os.writeEntry("contactSlip", slips);
+}
+
+
+void Foam::particleContacts::readState(const dictionary& state)
+{
+    slip_.clear();
+    if (!state.found("contactPairs"))
+    {
+        return;
+    }
+    const List<labelPair> keys(state.get<List<labelPair>>("contactPairs"));
+    const List<vector> slips(state.get<List<vector>>("contactSlip"));
+    if (keys.size() != slips.size())
+    {
+        FatalIOErrorInFunction(state)
+            << "contactPairs and contactSlip in " << state.name()
+            << " differ in length" << exit(FatalIOError);
+    }
+    forAll(keys, n)
+    {
+        slip_[key(keys[n].first(), keys[n].second())] = slips[n];
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,282 @@
+// Unit tests for the rough contact laws (thesis 1, section 2.6 and
+// chapter 5): Hertz with barrier (eqs 2.56-2.57), tangential spring and
+// Coulomb (eqs 2.59-2.63), adhesion (eqs 5.1-5.2), loads (eqs 2.64, 2.69)
+
+#include "hertzContact.H"
+#include "contactLoads.H"
+#include "IStringStream.H"
+#include "mathematicalConstants.H"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+using namespace Foam;
+
+namespace
+{
+
+const fdm::contactLaw::scales unitScales{1.0, 1.0};
+
+autoPtr<fdm::contactLaw> law(const std::string& entries)
+{
+    IStringStream is(entries);
+    return fdm::contactLaw::New(dictionary(is), unitScales);
+}
+
+// h_r = 5e-3, k_n = 1e4, mu = 0.5; floor gap of a unit pair 1e-5
+const std::string thesis = "roughness 5e-3; friction 0.5; kn 1e4;";
+const scalar hr = 5e-3, kn = 1e4, mu = 0.5, floorGap = 1e-5;
+
+fdm::contactGeometry geometry(const scalar gap)
+{
+    return fdm::contactGeometry{vector(1, 0, 0), gap, floorGap};
+}
+
+// Eq 2.57 written out independently of the implementation
+scalar barrierForce(const scalar gap)
+{
+    const scalar d = floorGap/hr;
+    return kn*std::pow(hr - gap, 1.5)
+       *(1 - std::exp(10*(d - 1)))/(1 - std::exp(10*(d - gap/hr)));
+}
+
+} // namespace
+
+
+TEST(contactLaw, normalForceFollowsHertzWithBarrier)
+{
+    const auto c = law(thesis);
+    EXPECT_EQ(c->type(), "hertz");
+    EXPECT_DOUBLE_EQ(c->roughness(), hr);
+
+    // No force at and beyond the onset delta' = h_r
+    EXPECT_EQ(c->elasticNormalForce(hr, floorGap), 0);
+    EXPECT_EQ(c->elasticNormalForce(2*hr, floorGap), 0);
+
+    for (const scalar gap : {0.9*hr, 0.5*hr, 0.1*hr, 0.01*hr, 3e-5})
+    {
+        EXPECT_NEAR
+        (
+            c->elasticNormalForce(gap, floorGap)/barrierForce(gap), 1, 1e-12
+        );
+    }
+    // Far from the floor the barrier is 1 to 1e-3: plain Hertz
+    EXPECT_NEAR
+    (
+        c->elasticNormalForce(0.5*hr, floorGap)/(kn*std::pow(0.5*hr, 1.5)),
+        1, 1e-2
+    );
+}
+
+
+TEST(contactLaw, barrierKeepsGapsAboveTheFloor)
+{
+    const auto c = law(thesis);
+
+    // F_el grows monotonically as the gap closes and exceeds any load
+    // before the floor: the equilibrium gap under a load is above it
+    scalar previous = 0;
+    for (scalar gap = hr; gap > floorGap*(1 + 1e-6); gap = 0.5*(gap + floorGap))
+    {
+        const scalar f = c->elasticNormalForce(gap, floorGap);
+        EXPECT_GE(f, previous);
+        previous = f;
+    }
+    for (const scalar load : {1.0, 1e2, 1e4})
+    {
+        scalar lo = floorGap, hi = hr;
+        for (int it = 0; it < 200; ++it)
+        {
+            const scalar mid = 0.5*(lo + hi);
+            (c->elasticNormalForce(mid, floorGap) > load ? lo : hi) = mid;
+        }
+        EXPECT_GT(lo, floorGap) << "load " << load;
+    }
+
+    // Overdamped approach under a load far above the Hertz scale
+    // k_n h_r^1.5 = 3.5: d(gap)/dt = -(F - F_el)/R, explicit steps
+    const scalar load = 1e3, R = 6*constant::mathematical::pi/1e-3;
+    scalar gap = 2*hr;
+    for (int step = 0; step < 20000; ++step)
+    {
+        gap -= 1e-5*(load - c->elasticNormalForce(gap, floorGap))/R;
+        ASSERT_GT(gap, floorGap) << "step " << step;
+    }
+}
+
+
+TEST(contactLaw, stiffnessFromTheDeformationRule)
+{
+    // 6 pi eta gammaDot a_1^2 = k_n (eps h_r)^1.5 (thesis 2.6.3)
+    const auto c =
+        law("roughness 5e-3; friction 0.5; shearRate 2; meanDeformation 0.2;");
+    const scalar F0 = 6*constant::mathematical::pi*2;
+    EXPECT_NEAR(c->kn()*std::pow(0.2*hr, 1.5)/F0, 1, 1e-12);
+    // At the mean deformation the force is F0 (barrier 1 + 3e-4)
+    EXPECT_NEAR(c->elasticNormalForce(0.8*hr, floorGap)/F0, 1, 1e-3);
+}
+
+
+TEST(contactLaw, tangentialLoadingSlidingAndUnloading)
+{
+    const auto c = law(thesis);
+    const scalar gap = 0.5*hr, delta = hr - gap;
+    const scalar Fel = c->elasticNormalForce(gap, floorGap);
+    const scalar kt = (2.0/7.0)*Fel/delta;
+    const vector t(0, 1, 0);
+
+    // Loading: F_t = -k_t Y while below the Coulomb cap
+    vector slip = 0.1*mu*Fel/kt*t;
+    fdm::contactForce f = c->evaluate(geometry(gap), slip);
+    EXPECT_FALSE(f.sliding);
+    EXPECT_NEAR(f.tangential.y(), -0.1*mu*Fel, 1e-12*Fel);
+    EXPECT_NEAR(f.force.x(), -Fel, 1e-12*Fel);
+
+    // Beyond the cap: |F_t| = mu F_el and the spring is truncated
+    slip = 3*mu*Fel/kt*t;
+    f = c->evaluate(geometry(gap), slip);
+    EXPECT_TRUE(f.sliding);
+    EXPECT_NEAR(mag(f.tangential), mu*Fel, 1e-12*Fel);
+    EXPECT_NEAR(mag(slip), mu*Fel/kt, 1e-12*mu*Fel/kt);
+
+    // Unloading: a reversed slip increment sticks at once with slope k_t
+    slip -= 0.2*mu*Fel/kt*t;
+    f = c->evaluate(geometry(gap), slip);
+    EXPECT_FALSE(f.sliding);
+    EXPECT_NEAR(f.tangential.y(), -0.8*mu*Fel, 1e-12*Fel);
+
+    // Out of contact: no force and the slip is forgotten
+    slip = t;
+    f = c->evaluate(geometry(1.5*hr), slip);
+    EXPECT_EQ(mag(f.force), 0);
+    EXPECT_EQ(mag(slip), 0);
+}
+
+
+TEST(contactLaw, slipTurnsWithThePair)
+{
+    const vector slip(0, 3, 4);
+    const vector n = normalised(vector(1, 1, 0));
+    const vector turned = fdm::rotateIntoTangentPlane(slip, n);
+    EXPECT_NEAR(turned & n, 0, 1e-15);
+    EXPECT_NEAR(mag(turned), 5, 1e-14);
+
+    // Slip velocity (eq 2.62): counter-rotating spheres roll on each
+    // other, co-rotating ones slide; a sphere rolling on a wall has none
+    const vector e(1, 0, 0), W(0, 0, 1);
+    EXPECT_NEAR
+    (
+        mag(fdm::slipVelocity(e, Zero, W, 1, Zero, -W, 1)), 0, 1e-15
+    );
+    EXPECT_NEAR
+    (
+        mag(fdm::slipVelocity(e, Zero, W, 1, Zero, W, 1.0)), 2, 1e-15
+    );
+    EXPECT_NEAR
+    (
+        mag(fdm::slipVelocity(e, vector(0, -1, 0), W, 1, Zero, Zero, 0)),
+        0, 1e-15
+    );
+}
+
+
+TEST(contactLaw, adhesionPullOffAndFrictionOnTheElasticPart)
+{
+    const auto c = law(thesis + " model adhesiveHertz; adhesionForce 2;");
+    EXPECT_EQ(c->type(), "adhesiveHertz");
+
+    // Just inside the roughness the pair pulls with F_adh (eq 5.1)
+    fdm::contactGeometry g = geometry(hr*(1 - 1e-9));
+    vector slip = Zero;
+    fdm::contactForce f = c->evaluate(g, slip);
+    EXPECT_NEAR(f.force.x(), 2, 1e-6);
+
+    // Outside it nothing: the pull-off force is F_adh
+    g.gap = hr*(1 + 1e-9);
+    f = c->evaluate(g, slip);
+    EXPECT_EQ(mag(f.force), 0);
+
+    // Where F_el = F_adh the net normal force vanishes, and the friction
+    // cap is mu F_el, not mu (F_el - F_adh) (eq 5.2)
+    scalar lo = floorGap, hi = hr;
+    for (int it = 0; it < 200; ++it)
+    {
+        const scalar mid = 0.5*(lo + hi);
+        (c->elasticNormalForce(mid, floorGap) > 2 ? lo : hi) = mid;
+    }
+    g.gap = 0.5*(lo + hi);
+    slip = vector(0, 1, 0);
+    f = c->evaluate(g, slip);
+    EXPECT_NEAR(f.force.x(), 0, 1e-9);
+    EXPECT_NEAR(mag(f.tangential), mu*2, 1e-9);
+
+    // Adhesion number: F_adh = G 6 pi eta a_1^2 gammaDot
+    const auto d =
+        law
+        (
+            "model adhesiveHertz; roughness 5e-3; friction 0.1;"
+            " shearRate 3; meanDeformation 0.1; adhesionNumber 0.5;"
+        );
+    EXPECT_NEAR(d->adhesionForce(), 0.5*6*constant::mathematical::pi*3, 1e-12);
+}
+
+
+TEST(contactLaw, pairLoadsConserveMomentumAndAngularMomentum)
+{
+    const auto c = law(thesis);
+    const scalar ai = 1, aj = 1.4;
+    const vector xi(0.3, -0.2, 0.1);
+    const vector n = normalised(vector(1, 2, -0.5));
+    const scalar gap = 0.4*hr, r = ai + aj + gap;
+    const vector xj = xi + r*n;
+
+    vector slip = 1e-4*normalised(vector(0, 0.5, 2) - (vector(0, 0.5, 2) & n)*n);
+    const fdm::contactForce f =
+        c->evaluate(fdm::contactGeometry{n, gap, 1e-5*(ai + aj)/2}, slip);
+    ASSERT_GT(mag(f.tangential), 0);
+
+    List<vector> F(2, Zero), T(2, Zero);
+    List<symmTensor> S(2, Zero);
+    fdm::addContactLoads
+    (
+        f, n, ai*r/(ai + aj), aj*r/(ai + aj), 0, 1, F, T, S
+    );
+
+    // Newton's third law and no net moment about the origin
+    EXPECT_NEAR(mag(F[0] + F[1]), 0, 1e-15*mag(F[0]));
+    const vector moment = (xi ^ F[0]) + (xj ^ F[1]) + T[0] + T[1];
+    EXPECT_NEAR(mag(moment), 0, 1e-12*mag(F[0]));
+
+    // The pair stresslet is symm(F (x) r), shared in the ratio a_i : a_j
+    const symmTensor pair = symm(f.force*(r*n));
+    EXPECT_NEAR(mag(S[0] + S[1] - pair), 0, 1e-12*mag(pair));
+    EXPECT_NEAR(mag(S[0]/ai - S[1]/aj), 0, 1e-12*mag(pair));
+
+    // Repulsion along n gives a compressive (negative-trace) stresslet
+    EXPECT_LT(tr(S[0] + S[1]), 0);
+}
+
+
+TEST(contactLaw, badInputNamesTheKeyword)
+{
+    FatalError.throwExceptions();
+    FatalIOError.throwExceptions();
+    for
+    (
+        const std::string& bad :
+        {
+            std::string("friction 0.5; kn 1e4;"),
+            std::string("roughness 0.5; friction 0.5; kn 1e4;"),
+            std::string("roughness 5e-3; friction -1; kn 1e4;"),
+            std::string("roughness 5e-3; friction 0.5;"),
+            std::string(thesis + " shearRate 1; meanDeformation 0.2;"),
+            std::string(thesis + " model sticky;"),
+            std::string(thesis + " model adhesiveHertz;")
+        }
+    )
+    {
+        EXPECT_THROW(law(bad), Foam::error) << bad;
+    }
+}
