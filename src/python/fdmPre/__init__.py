@@ -1,0 +1,1 @@
+"""Pre-processing for fdmSuspension cases (particle packings)."""

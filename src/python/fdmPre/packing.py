@@ -1,0 +1,199 @@
+"""Random non-overlapping packings of spheres in a box (thesis 1, 4.2:
+random initial positions; chapter 5: particles attached to the walls).
+
+The spheres start at random positions with radii shrunk by a factor s and
+grow to full size while overlaps are relaxed by steepest descent on a
+harmonic overlap energy (a soft-sphere compression).  Every contact, wall
+included, is required to keep a clearance `gap` (in units of the smallest
+radius), so that no pair starts inside the contact roughness.  The result
+depends only on the inputs and the seed.
+
+Directions are periodic or bounded by walls at the box faces.
+"""
+
+import numpy as np
+
+
+def bidisperse_counts(volume, phi, a1=1.0, ratio=1.4):
+    """Numbers of small (a1) and large (ratio a1) spheres filling a
+    fraction phi of the volume in equal parts (thesis 4.2)."""
+    v1 = 4.0 / 3.0 * np.pi * a1**3
+    v2 = v1 * ratio**3
+    return int(round(0.5 * phi * volume / v1)), int(round(0.5 * phi * volume / v2))
+
+
+class Box:
+    """Axis-aligned box, origin lo, edges span, periodic flags."""
+
+    def __init__(self, lo, span, periodic):
+        self.lo = np.asarray(lo, float)
+        self.span = np.asarray(span, float)
+        self.periodic = np.asarray(periodic, bool)
+
+    def image(self, d):
+        """Minimum image of separation vectors d (..., 3)."""
+        p = self.periodic
+        d[..., p] -= self.span[p] * np.round(d[..., p] / self.span[p])
+        return d
+
+    def wrap(self, x):
+        p = self.periodic
+        x[:, p] = self.lo[p] + np.mod(x[:, p] - self.lo[p], self.span[p])
+        return x
+
+
+def _pairs(x, r, box, skin):
+    """Candidate pairs (i < j) with surface gap below skin: O(N^2) in
+    chunks, enough for the few thousand spheres of a resolved case."""
+    n = len(x)
+    I, J = [], []
+    chunk = max(1, 4_000_000 // max(n, 1))
+    for s in range(0, n, chunk):
+        i = np.arange(s, min(n, s + chunk))
+        d = box.image(x[None, :, :] - x[i, None, :])
+        dist = np.sqrt((d**2).sum(-1))
+        near = (dist < r[i, None] + r[None, :] + skin) & (
+            np.arange(n)[None, :] > i[:, None])
+        ii, jj = np.nonzero(near)
+        I.append(i[ii])
+        J.append(jj)
+    return np.concatenate(I), np.concatenate(J)
+
+
+def _relax(x, r, box, gap, iters, tol, free):
+    """Steepest descent on sum of squared overlaps (pairs and walls) with
+    clearance gap, moving the spheres flagged free; returns the largest
+    remaining overlap."""
+    skin = 2 * r.max()
+    I, J = _pairs(x, r, box, skin)
+    walls = ~box.periodic
+    moved = np.zeros_like(x)
+    worst = np.inf
+    for it in range(iters):
+        if np.abs(moved).max() > 0.25 * skin:
+            I, J = _pairs(x, r, box, skin)
+            moved[:] = 0
+        dx = np.zeros_like(x)
+        d = box.image(x[J] - x[I])
+        dist = np.sqrt((d**2).sum(-1))
+        over = r[I] + r[J] + gap - dist
+        hit = over > 0
+        worst = over[hit].max() if hit.any() else 0.0
+        if hit.any():
+            n = d[hit] / dist[hit, None]
+            push = 0.5 * over[hit, None] * n
+            np.add.at(dx, I[hit], -push)
+            np.add.at(dx, J[hit], push)
+        for k in np.nonzero(walls)[0]:
+            lo = box.lo[k] + r + gap
+            hi = box.lo[k] + box.span[k] - r - gap
+            below = (x[:, k] < lo) & free
+            above = (x[:, k] > hi) & free
+            dx[below, k] += lo[below] - x[below, k]
+            dx[above, k] -= x[above, k] - hi[above]
+            if below.any() or above.any():
+                worst = max(worst, (lo - x[:, k])[below].max(initial=0),
+                            (x[:, k] - hi)[above].max(initial=0))
+        if worst <= tol:
+            return worst
+        dx[~free] = 0
+        x += dx
+        moved += dx
+        box.wrap(x)
+    return worst
+
+
+def pack(box, radii, seed=1, gap=0.01, fixed_positions=None,
+         max_stages=2000, log=None):
+    """Positions (N, 3) for spheres of the given radii in box.
+
+    fixed_positions: optional (M, 3) positions of the first M spheres,
+    which stay where they are (spheres attached to a wall, chapter 5).
+    gap: clearance kept between surfaces and from the walls, in units of
+    the smallest radius.
+    """
+    radii = np.asarray(radii, float)
+    n = len(radii)
+    rng = np.random.default_rng(seed)
+    free = np.ones(n, bool)
+    m = 0 if fixed_positions is None else len(fixed_positions)
+    free[:m] = False
+    # Start the free spheres away from the walls, beyond any attached
+    # layer (a sphere caught between a wall and an attached sphere could
+    # not get out)
+    margin = np.where(box.periodic, 0.0, radii.max() * (3 if m else 1))
+    x = box.lo + margin + rng.random((n, 3)) * (box.span - 2 * margin)
+    if m:
+        x[:m] = fixed_positions
+    phi = (4 / 3 * np.pi * radii**3).sum() / np.prod(box.span)
+    # Start dilute (phi 0.05 at most) and grow
+    s = min(1.0, (0.05 / phi) ** (1 / 3)) if phi > 0 else 1.0
+    growth = 1.02
+    tol = 1e-6 * radii.min()
+    for stage in range(max_stages):
+        # Attached spheres keep their full size (they touch the wall)
+        size = np.where(free, s * radii, radii)
+        worst = _relax(x, size, box, gap * radii.min(), 1000, tol, free)
+        if worst <= tol:
+            if s >= 1.0:
+                return x
+            s = min(1.0, s * growth)
+        else:
+            # Not relaxed yet: relax more at the same size, grow slower
+            growth = 1 + 0.5 * (growth - 1)
+            if growth < 1 + 1e-7:
+                break
+        if log and stage % 20 == 0:
+            log(f"  stage {stage}: size {s:.4f}, overlap {worst:.2e}")
+    raise RuntimeError(
+        f"packing did not converge at volume fraction {phi:.3f} (size factor"
+        f" {s:.4f}): lower the volume fraction or the clearance gap")
+
+
+def volume_fraction(box, radii):
+    return (4 / 3 * np.pi * np.asarray(radii)**3).sum() / np.prod(box.span)
+
+
+def min_clearance(x, radii, box):
+    """Smallest surface gap between spheres and to the walls."""
+    radii = np.asarray(radii, float)
+    I, J = _pairs(x, radii, box, 10 * radii.max())
+    d = box.image(x[J] - x[I])
+    g = np.sqrt((d**2).sum(-1)) - radii[I] - radii[J]
+    worst = g.min() if len(g) else np.inf
+    for k in np.nonzero(~box.periodic)[0]:
+        worst = min(worst, (x[:, k] - box.lo[k] - radii).min(),
+                    (box.lo[k] + box.span[k] - x[:, k] - radii).min())
+    return worst
+
+
+def wall_layer(box, axis, side, radius, coverage, seed=1, gap=0.01):
+    """Spheres touching (at clearance gap) the wall normal to axis on side
+    'lower' or 'upper', placed by random sequential addition in the plane
+    up to an area coverage (fraction of the wall covered by their discs;
+    random sequential addition jams near 0.547)."""
+    rng = np.random.default_rng(seed + 7919 * (side == "upper") + 104729 * axis)
+    plane = [k for k in range(3) if k != axis]
+    area = box.span[plane[0]] * box.span[plane[1]]
+    target = int(coverage * area / (np.pi * radius**2))
+    clearance = 2 * radius + gap * radius
+    pts = []
+    for attempt in range(200 * max(target, 1)):
+        if len(pts) >= target:
+            break
+        p = box.lo[plane] + rng.random(2) * box.span[plane]
+        if pts:
+            d = np.asarray(pts) - p
+            for k, ax in enumerate(plane):
+                if box.periodic[ax]:
+                    d[:, k] -= box.span[ax] * np.round(d[:, k] / box.span[ax])
+            if (np.sqrt((d**2).sum(1)) < clearance).any():
+                continue
+        pts.append(p)
+    x = np.zeros((len(pts), 3))
+    if pts:
+        x[:, plane] = pts
+    height = radius * (1 + gap)
+    x[:, axis] = (box.lo[axis] + height if side == "lower"
+                  else box.lo[axis] + box.span[axis] - height)
+    return x

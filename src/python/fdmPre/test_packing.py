@@ -1,0 +1,65 @@
+"""Unit tests of the random packing (fdmPre.packing): no overlaps, the
+requested volume fraction in equal volumes, walls respected, attached
+spheres kept, reproducible from the seed."""
+
+import unittest
+
+import numpy as np
+
+from fdmPre.packing import (Box, bidisperse_counts, min_clearance, pack,
+                            volume_fraction, wall_layer)
+
+
+class BidisperseCounts(unittest.TestCase):
+    def test_thesis_table_4_7(self):
+        # 20^3 box at phi0 = 0.42 holds 547 spheres (thesis Table 4.7)
+        n1, n2 = bidisperse_counts(8000, 0.42)
+        self.assertEqual(n1 + n2, 547)
+        # Equal volumes of the two sizes to 1 %
+        self.assertAlmostEqual(n1 / (n2 * 1.4**3), 1, delta=0.01)
+
+
+class Packing(unittest.TestCase):
+    box = Box([-4, -4, 0], [8, 8, 8], [True, False, True])
+
+    def radii(self, phi):
+        n1, n2 = bidisperse_counts(512, phi)
+        return np.r_[np.ones(n1), 1.4 * np.ones(n2)]
+
+    def test_dense_packing_keeps_clearance_and_walls(self):
+        r = self.radii(0.50)
+        x = pack(self.box, r, seed=5, gap=0.01)
+        self.assertAlmostEqual(volume_fraction(self.box, r), 0.50, delta=0.01)
+        # Clearance 0.01 a1 between all surfaces and to the walls y = -+4
+        self.assertGreater(min_clearance(x, r, self.box), 0.01 * (1 - 1e-3))
+        self.assertTrue(np.all(np.abs(x[:, 1]) + r <= 4))
+        # Periodic coordinates wrapped into the box
+        self.assertTrue(np.all((x[:, 0] >= -4) & (x[:, 0] < 4)))
+
+    def test_same_seed_same_packing(self):
+        r = self.radii(0.3)
+        a = pack(self.box, r, seed=3)
+        b = pack(self.box, r, seed=3)
+        c = pack(self.box, r, seed=4)
+        self.assertTrue(np.array_equal(a, b))
+        self.assertGreater(np.abs(a - c).max(), 1)
+
+    def test_attached_layer_stays_on_the_wall(self):
+        lower = wall_layer(self.box, 1, "lower", 1.0, 0.3, seed=2)
+        upper = wall_layer(self.box, 1, "upper", 1.0, 0.3, seed=2)
+        fixed = np.r_[lower, upper]
+        self.assertGreater(len(lower), 3)
+        r = np.r_[np.ones(len(fixed)), self.radii(0.3)]
+        x = pack(self.box, r, seed=2, fixed_positions=fixed)
+        self.assertTrue(np.array_equal(x[:len(fixed)], fixed))
+        self.assertTrue(np.allclose(x[:len(lower), 1], -4 + 1.01))
+        self.assertGreater(min_clearance(x, r, self.box), 0.01 * (1 - 1e-3))
+
+    def test_impossible_fraction_is_reported(self):
+        r = np.ones(200)   # phi = 1.6 in the 8^3 box
+        with self.assertRaises(RuntimeError):
+            pack(self.box, r, seed=1, max_stages=30)
+
+
+if __name__ == "__main__":
+    unittest.main()
