@@ -86,5 +86,14 @@ expectFatal subGridTableOtherSettings $pp \
     '$a indicator { b 4; } subGrid { model frameInvariant; }' \
     "subGridPair_lambda1" "b = 5" "b = 4" "subGridCalibration"
 expectFatal badGapFloor $pp '$a gapFloor 0;' "gapFloor" "0 < gapFloor < 0.1"
+expectFatal unknownContactModel $pp \
+    '$a contact { model sticky; roughness 5e-3; friction 0.5; kn 1e4; }' \
+    "Unknown contact model sticky" "adhesiveHertz" "hertz"
+expectFatal contactStiffnessTwice $pp \
+    '$a contact { roughness 5e-3; friction 0.5; kn 1e4; shearRate 1; meanDeformation 0.2; }' \
+    "contact" "either as kn" "not both"
+expectFatal contactRoughTooLarge $pp \
+    '$a contact { roughness 0.5; friction 0.5; kn 1e4; }' \
+    "roughness 0.5" "0 < roughness < 0.1"
 
 [ "$failures" -eq 0 ]

@@ -132,7 +132,10 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
     subGrid_->update(position_, radius_, box_);
     if (contacts_)
     {
-        contacts_->update(position_, radius_, box_);
+        contacts_->update
+        (
+            position_, radius_, box_, mesh_.time().deltaTValue()
+        );
         contacts_->report();
         contactForce_ = contacts_->forces();
         contactTorque_ = contacts_->torques();
@@ -290,8 +293,13 @@ Foam::scalar Foam::fdmParticleCloud::correct
             }
         }
     }
-    // Sub-grid resistance on the left of eq 2.43, per unit fluid density
+    // Sub-grid resistance and implicit contact springs on the left of eq
+    // 2.43, per unit fluid density
     subGrid_->addTo(system_, nu_);
+    if (contacts_)
+    {
+        contacts_->addTo(system_, 1/rhoFluid_);
+    }
 
     lastSolve_ = system_.solve(solveTolerance_, 1000, U_, Omega_);
     if (!lastSolve_.converged)
@@ -431,6 +439,19 @@ void Foam::fdmParticleCloud::finishSolve
     (
         U_, Omega_, rhoFluid_*nu_, force_, torque_, stresslet_, dipoleTrace_
     );
+
+    // Contact loads: explicit part and the implicit springs' share at the
+    // solved velocities
+    if (contacts_)
+    {
+        contactForce_ = contacts_->forces();
+        contactTorque_ = contacts_->torques();
+        contactStresslet_ = contacts_->stresslets();
+        contacts_->addImplicitLoads
+        (
+            U_, Omega_, contactForce_, contactTorque_, contactStresslet_
+        );
+    }
 
     firstSolveDone_ = true;
 }

@@ -55,6 +55,17 @@ void Foam::particleContacts::forEachContact
 }
 
 
+Foam::List<Foam::vector> Foam::particleContacts::wallVelocities() const
+{
+    List<vector> Uw(walls_.size());
+    forAll(walls_.walls(), w)
+    {
+        Uw[w] = walls_.velocity(walls_.walls()[w]);
+    }
+    return Uw;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleContacts::particleContacts
@@ -114,9 +125,12 @@ void Foam::particleContacts::update
 (
     const pointField& positions,
     const scalarField& radii,
-    const fdm::periodicBox& box
+    const fdm::periodicBox& box,
+    const scalar dt
 )
 {
+    springs_.clear();
+    const List<vector> wallVelocity(wallVelocities());
     force_ = Zero;
     torque_ = Zero;
     stresslet_ = Zero;
@@ -135,11 +149,21 @@ void Foam::particleContacts::update
             const fdm::contactForce c = law_->evaluate(g, slip);
             current[k] = slip;
 
+            const label j = wall < 0 ? k.second : -1;
             fdm::addContactLoads
             (
-                c, g.normal, armI, armJ, k.first, wall < 0 ? k.second : -1,
-                force_, torque_, stresslet_
+                c, g.normal, armI, armJ, k.first, j, force_, torque_,
+                stresslet_
             );
+            if (c.tangentialStiffness > 0)
+            {
+                springs_.emplace_back
+                (
+                    k.first, j, g.normal, armI, armJ,
+                    c.tangentialStiffness*dt,
+                    wall < 0 ? vector::zero : wallVelocity[wall]
+                );
+            }
             ++(wall < 0 ? nPairs_ : nWalls_);
             nSliding_ += c.sliding;
             nBelowFloor_ += c.belowFloor;
@@ -185,17 +209,13 @@ void Foam::particleContacts::advance
     {
         return;
     }
-    List<vector> wallVelocity(walls_.size());
-    forAll(walls_.walls(), w)
-    {
-        wallVelocity[w] = walls_.velocity(walls_.walls()[w]);
-    }
+    const List<vector> wallVelocity(wallVelocities());
 
     forEachContact
     (
         positions, radii, box,
-        [&](const key& k, const fdm::contactGeometry& g, const scalar,
-            const scalar, const label wall)
+        [&](const key& k, const fdm::contactGeometry& g, const scalar armI,
+            const scalar armJ, const label wall)
         {
             const auto it = slip_.find(k);
             if (it == slip_.end())
@@ -207,17 +227,49 @@ void Foam::particleContacts::advance
                 wall < 0
               ? fdm::slipVelocity
                 (
-                    g.normal, U[i], Omega[i], radii[i],
-                    U[k.second], Omega[k.second], radii[k.second]
+                    g.normal, U[i], Omega[i], armI,
+                    U[k.second], Omega[k.second], armJ
                 )
               : fdm::slipVelocity
                 (
-                    g.normal, U[i], Omega[i], radii[i],
-                    wallVelocity[wall], Zero, 0
+                    g.normal, U[i], Omega[i], armI, wallVelocity[wall], Zero, 0
                 );
             it->second += dt*Us;
         }
     );
+}
+
+
+void Foam::particleContacts::addTo
+(
+    fdm::particleVelocitySystem& system,
+    const scalar scale
+) const
+{
+    for (const fdm::implicitSlipSpring& s : springs_)
+    {
+        s.addTo(system, scale);
+    }
+}
+
+
+void Foam::particleContacts::addImplicitLoads
+(
+    const List<vector>& U,
+    const List<vector>& Omega,
+    List<vector>& force,
+    List<vector>& torque,
+    List<symmTensor>& stresslet
+) const
+{
+    for (const fdm::implicitSlipSpring& s : springs_)
+    {
+        fdm::addContactLoads
+        (
+            s.force(U, Omega), s.normal(), s.armI(), s.armJ(), s.i(), s.j(),
+            force, torque, stresslet
+        );
+    }
 }
 
 

@@ -5,6 +5,7 @@
 
 #include "contactLaw.H"
 #include "mathematicalConstants.H"
+#include "OStringStream.H"
 
 namespace Foam
 {
@@ -36,9 +37,20 @@ Foam::scalar Foam::fdm::contactLaw::readBounded
     const scalar x = dict.get<scalar>(key);
     if (!(x >= lo && x < hi))
     {
+        // lo = VSMALL stands for "> 0", hi = GREAT for no upper bound
+        OStringStream range;
+        range << (lo == VSMALL ? "0 < " : "") << key;
+        if (lo != VSMALL)
+        {
+            range << " >= " << lo;
+        }
+        if (hi != GREAT)
+        {
+            range << " < " << hi;
+        }
         FatalIOErrorInFunction(dict)
             << key << ' ' << x << " in " << dict.name()
-            << ": allowed values are " << lo << " <= " << key << " < " << hi
+            << ": allowed values are " << range.str().c_str()
             << " (" << meaning << ")" << exit(FatalIOError);
     }
     return x;
@@ -151,7 +163,7 @@ Foam::fdm::contactForce Foam::fdm::contactLaw::evaluate
     vector& slip
 ) const
 {
-    contactForce c{Zero, Zero, 0, false, g.gap < g.floorGap};
+    contactForce c{Zero, Zero, 0, false, g.gap < g.floorGap, 0};
     if (!touching(g.gap))
     {
         slip = Zero;
@@ -176,6 +188,10 @@ Foam::fdm::contactForce Foam::fdm::contactLaw::evaluate
             c.sliding = true;
             c.tangential *= limit/magFt;
             slip = -c.tangential/kt;
+        }
+        else
+        {
+            c.tangentialStiffness = kt;
         }
     }
     else
@@ -209,14 +225,14 @@ Foam::vector Foam::fdm::slipVelocity
     const vector& n,
     const vector& Ui,
     const vector& Omegai,
-    const scalar ai,
+    const scalar li,
     const vector& Uj,
     const vector& Omegaj,
-    const scalar aj
+    const scalar lj
 )
 {
     const vector dU = Ui - Uj;
-    return dU - (dU & n)*n + ((ai*Omegai + aj*Omegaj) ^ n);
+    return dU - (dU & n)*n + ((li*Omegai + lj*Omegaj) ^ n);
 }
 
 

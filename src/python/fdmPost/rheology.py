@@ -1,0 +1,165 @@
+"""Suspension rheology from the particle time series (thesis 1, section
+2.7): volume fraction profile phi(y) (eq 2.70), particle velocity profile
+u_p(y) (eq 6.4), core volume fraction (eq 2.71), core shear rate, particle
+stresses Sigma^hp and Sigma^c (eqs 2.73-2.74) and the core viscosity
+(eq 2.76), with time averages and their error bars.
+
+Geometry: plane Couette cell, walls normal to axis `normal` (y), flow along
+x, vorticity along z.  Stresses in the units of the run (Pa when the
+stresslets are in N m and lengths in m).
+"""
+
+import numpy as np
+
+
+def slab_volume(yc, a, lo, hi):
+    """Volume of spheres (centres yc, radii a) between planes y = lo, hi:
+    pi int (a^2 - (y - yc)^2) dy over the overlap (exact indicator of
+    eq 2.70, no sampling)."""
+    u0 = np.clip(lo - yc, -a, a)
+    u1 = np.clip(hi - yc, -a, a)
+    F = lambda u: a**2 * u - u**3 / 3.0  # noqa: E731
+    return np.pi * (F(u1) - F(u0))
+
+
+def symm6_to_tensor(s):
+    """(..., 6) xx xy xz yy yz zz -> (..., 3, 3)."""
+    t = np.empty(s.shape[:-1] + (3, 3))
+    idx = [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)]
+    for k, (i, j) in enumerate(idx):
+        t[..., i, j] = s[..., k]
+        t[..., j, i] = s[..., k]
+    return t
+
+
+class CouetteSeries:
+    """The particle series of a Couette run with the cell's geometry.
+
+    data: dict of arrays as in postProcessing/particles.h5 (time,
+    position, velocity, radius, stresslet, dipoleTrace, contactStresslet).
+    """
+
+    def __init__(self, data, lo, span, eta, layer, normal=1, flow=0):
+        self.t = np.asarray(data["time"])
+        self.x = np.asarray(data["position"])
+        self.u = np.asarray(data["velocity"])
+        self.a = np.asarray(data["radius"])
+        self.S = np.asarray(data["stresslet"])
+        self.s = np.asarray(data["dipoleTrace"])
+        zero = np.zeros_like(self.S)
+        self.Sc = np.asarray(data.get("contactStresslet", zero))
+        self.lo = np.asarray(lo, float)
+        self.span = np.asarray(span, float)
+        self.eta = eta
+        self.layer = layer
+        self.n = normal
+        self.f = flow
+        self.area = np.prod(self.span) / self.span[normal]
+        self.core = (self.lo[normal] + layer,
+                     self.lo[normal] + self.span[normal] - layer)
+        if self.core[1] <= self.core[0]:
+            raise ValueError(
+                f"wall layer {layer} leaves no core in a cell of height"
+                f" {self.span[normal]}")
+
+    @staticmethod
+    def from_h5(path, **geometry):
+        import h5py
+        with h5py.File(path, "r") as f:
+            data = {k: f[k][...] for k in f.keys()}
+        return CouetteSeries(data, **geometry)
+
+    # Profiles ----------------------------------------------------------
+
+    def profiles(self, bins, steps):
+        """phi(y) (eq 2.70) and the indicator-weighted particle velocity
+        u_p(y) (eq 6.4) averaged over the records `steps`."""
+        edges = np.linspace(self.lo[self.n], self.lo[self.n] + self.span[self.n],
+                            bins + 1)
+        vol = np.zeros(bins)
+        mom = np.zeros(bins)
+        for k in steps:
+            yc = self.x[k, :, self.n]
+            for b in range(bins):
+                v = slab_volume(yc, self.a, edges[b], edges[b + 1])
+                vol[b] += v.sum()
+                mom[b] += (v * self.u[k, :, self.f]).sum()
+        dy = np.diff(edges)
+        phi = vol / (len(steps) * self.area * dy)
+        up = np.where(vol > 0, mom / np.maximum(vol, 1e-300), np.nan)
+        return 0.5 * (edges[1:] + edges[:-1]), phi, up
+
+    # Core quantities per record -----------------------------------------
+
+    def in_core(self, k):
+        y = self.x[k, :, self.n]
+        return (y > self.core[0]) & (y < self.core[1])
+
+    def core_volume_fraction(self, k):
+        """Eq 2.71: particle volume between the core planes."""
+        v = slab_volume(self.x[k, :, self.n], self.a, *self.core)
+        return v.sum() / (self.area * (self.core[1] - self.core[0]))
+
+    def core_shear_rate(self, k):
+        """Slope of u_x against y of the particles centred in the core."""
+        c = self.in_core(k)
+        if c.sum() < 2:
+            return np.nan
+        return np.polyfit(self.x[k, c, self.n], self.u[k, c, self.f], 1)[0]
+
+    def core_stresses(self, k):
+        """Sigma^hp and Sigma^c (eqs 2.73-2.74) of the particles centred in
+        the core, as 3x3 tensors."""
+        c = self.in_core(k)
+        V = self.area * (self.core[1] - self.core[0])
+        SH = symm6_to_tensor(self.S[k, c]) \
+            + (self.s[k, c] / 3.0)[:, None, None] * np.eye(3)
+        Sc = symm6_to_tensor(self.Sc[k, c])
+        return SH.sum(0) / V, Sc.sum(0) / V
+
+    def series(self):
+        """Per record: core shear rate, phi_core, Sigma^hp, Sigma^c."""
+        g = np.array([self.core_shear_rate(k) for k in range(len(self.t))])
+        phi = np.array([self.core_volume_fraction(k) for k in range(len(self.t))])
+        hp, c = zip(*(self.core_stresses(k) for k in range(len(self.t))))
+        return g, phi, np.array(hp), np.array(c)
+
+
+def block_mean(x, blocks=5):
+    """Mean and standard error from `blocks` consecutive block means (the
+    records are correlated over a strain unit or so)."""
+    x = np.asarray(x, float)
+    x = x[np.isfinite(x)]
+    if len(x) < blocks:
+        return (x.mean() if len(x) else np.nan), np.nan
+    means = np.array([b.mean() for b in np.array_split(x, blocks)])
+    return means.mean(), means.std(ddof=1) / np.sqrt(blocks)
+
+
+def core_rheology(cs, start_time, blocks=5):
+    """Time-averaged core rheology after start_time (eq 2.76, eq 4.13):
+    dict of (mean, standard error)."""
+    g, phi, hp, c = cs.series()
+    keep = cs.t >= start_time
+    g, phi, hp, c = g[keep], phi[keep], hp[keep], c[keep]
+    gm = np.nanmean(g)
+    # Total shear stress of eq 2.72: fluid eta gammaDot_core + particles
+    sxy = cs.eta * g + hp[:, 0, 1] + c[:, 0, 1]
+    part = hp + c
+    out = {
+        "gammaDotCore": block_mean(g, blocks),
+        "phiCore": block_mean(phi, blocks),
+        # eq 2.76 with the time averages of stress and rate
+        "etaCore": (1 + (np.mean(hp[:, 0, 1] + c[:, 0, 1])) / (cs.eta * gm),
+                    block_mean(sxy / (cs.eta * g), blocks)[1]),
+        "contactShare": block_mean(c[:, 0, 1] / sxy, blocks),
+        "N1": block_mean((part[:, 0, 0] - part[:, 1, 1]) / sxy, blocks),
+        "N2": block_mean((part[:, 1, 1] - part[:, 2, 2]) / sxy, blocks),
+        "records": int(keep.sum()),
+    }
+    return out
+
+
+def maron_pierce(phi, alpha=0.803, phi_j=0.59):
+    """Thesis fit eq 4.12: eta = alpha/(1 - phi/phi_J)^2."""
+    return alpha / (1 - np.asarray(phi) / phi_j) ** 2

@@ -1,0 +1,81 @@
+"""Unit tests of fdmPost.rheology against exact geometry and stress
+identities."""
+
+import unittest
+
+import numpy as np
+
+from fdmPost.rheology import (CouetteSeries, block_mean, slab_volume,
+                              symm6_to_tensor)
+
+
+class SlabVolume(unittest.TestCase):
+    def test_whole_sphere_and_cap(self):
+        a = 1.3
+        self.assertAlmostEqual(slab_volume(0.0, a, -5, 5), 4 / 3 * np.pi * a**3, 12)
+        # Cap of height h: pi h^2 (3a - h)/3
+        h = 0.4
+        self.assertAlmostEqual(slab_volume(0.0, a, a - h, 9),
+                               np.pi * h**2 * (3 * a - h) / 3, 12)
+        # Slabs add up
+        e = np.linspace(-2, 2, 7)
+        self.assertAlmostEqual(sum(slab_volume(0.1, a, e[i], e[i + 1])
+                                   for i in range(6)), 4 / 3 * np.pi * a**3, 12)
+
+
+class Couette(unittest.TestCase):
+    def make(self):
+        # 4 spheres on a linear velocity profile u = 0.8 y; stresslets
+        # chosen by hand; box 10 x 10 x 10 from -5, wall layer 2
+        T, N = 3, 4
+        y = np.array([-4.0, -1.0, 1.0, 4.0])
+        x = np.zeros((T, N, 3))
+        x[:, :, 1] = y
+        u = np.zeros((T, N, 3))
+        u[:, :, 0] = 0.8 * y
+        S = np.zeros((T, N, 6))
+        S[:, :, 1] = 2.0          # S_xy = 2 on every particle
+        sc = np.zeros((T, N, 6))
+        sc[:, :, 0] = -1.0        # contact xx
+        sc[:, :, 1] = 0.5         # contact xy
+        data = dict(time=np.arange(T, dtype=float), position=x, velocity=u,
+                    radius=np.ones(N), stresslet=S,
+                    dipoleTrace=np.full((T, N), -3.0), contactStresslet=sc)
+        return CouetteSeries(data, lo=(-5, -5, -5), span=(10, 10, 10), eta=2.0,
+                             layer=2.0)
+
+    def test_core_quantities(self):
+        cs = self.make()
+        self.assertAlmostEqual(cs.core_shear_rate(0), 0.8, 12)
+        hp, c = cs.core_stresses(0)
+        V = 100 * 6
+        # Two core particles: S_xy 2 each, trace -3 each
+        self.assertAlmostEqual(hp[0, 1], 4 / V, 14)
+        self.assertAlmostEqual(hp[1, 1], 2 * (-1.0) / V, 14)
+        self.assertAlmostEqual(c[0, 0], -2 / V, 14)
+        # phi_core: two unit spheres inside the core slab of 600
+        self.assertAlmostEqual(cs.core_volume_fraction(0),
+                               2 * 4 / 3 * np.pi / V, 12)
+
+    def test_profile_integrates_to_mean_fraction(self):
+        cs = self.make()
+        yb, phi, up = cs.profiles(40, [0, 1])
+        self.assertAlmostEqual(phi.mean(), 4 * 4 / 3 * np.pi / 1000, 12)
+        # Velocity profile weighted by the indicator is the centre velocity
+        # where one sphere fills the slab
+        k = np.argmin(abs(yb - 1.0))
+        self.assertAlmostEqual(up[k], 0.8, 12)
+
+    def test_symm6(self):
+        t = symm6_to_tensor(np.arange(6.0))
+        self.assertTrue(np.array_equal(t, t.T))
+        self.assertEqual(t[1, 2], 4.0)
+
+    def test_block_mean(self):
+        m, e = block_mean(np.r_[np.zeros(5), np.ones(5)], blocks=2)
+        self.assertAlmostEqual(m, 0.5)
+        self.assertAlmostEqual(e, 0.5)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,74 @@
+"""Checks of the contactOnWall case test (see contactOnWall.sh)."""
+
+import sys
+
+import h5py
+import numpy as np
+
+from fdmPost.checks import Checks
+
+# Case data: a = 1, eta = 1, h_r = 5e-3, mu = 0.5, k_n from
+# 6 pi eta gammaDot a^2 = k_n (0.2 h_r)^1.5, gapFloor 1e-5
+W = 6 * np.pi
+hr, mu, floor = 5e-3, 0.5, 1e-5
+kn = 6 * np.pi / (0.2 * hr) ** 1.5
+
+
+def elastic_force(gap):
+    """Eq 2.57 for a wall contact (floor gap 1e-5 a)."""
+    d = floor / hr
+    return kn * (hr - gap) ** 1.5 * (1 - np.exp(10 * (d - 1))) / (
+        1 - np.exp(10 * (d - gap / hr)))
+
+
+def last(path):
+    with h5py.File(path, "r") as f:
+        return {k: f[k][-1] for k in ("time", "position", "velocity",
+                                      "angularVelocity", "contactForce",
+                                      "force")}
+
+
+def main(work):
+    s = last(f"{work}/straight/postProcessing/particles.h5")
+    r = last(f"{work}/restart/postProcessing/particles.h5")
+    gap = s["position"][:, 1] - 1
+    Fc, U = s["contactForce"], s["velocity"]
+    rest, stick, slide = 0, 1, 2
+
+    # Equilibrium overlap: the gap where eq 2.57 gives W, by bisection
+    lo, hi = floor * (1 + 1e-9), hr
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if elastic_force(mid) > W else (lo, mid)
+    expected = hr - 0.5 * (lo + hi)
+
+    # External forces of the three groups (constant/particleProperties)
+    Fext = np.array([[0, -W, 0], [0.3 * W, -W, 0], [0.8 * W, -W, 0]])
+
+    c = Checks()
+    # The load goes through the contact; the others' flow lifts it by 0.6 %
+    c.check("rest: |normal contact force / W - 1|", abs(Fc[rest, 1] / W - 1), 1e-2)
+    c.check("rest: |overlap / eq 2.57 equilibrium under W - 1|",
+            abs((hr - gap[rest]) / expected - 1), 1e-2)
+    c.check("rest: |force / eq 2.57 at its gap - 1|",
+            abs(Fc[rest, 1] / elastic_force(gap[rest]) - 1), 1e-6)
+    c.check("all: max |F^h + F^c + F_ext| / W (eq 4.17)",
+            np.abs(s["force"] + Fc + Fext).max() / W, 1e-3)
+    c.check("stick: |U_x| / U_x(slide)", abs(U[stick, 0]) / U[slide, 0], 1e-3)
+    c.check("stick: |F_t| / (mu F_el), below 1",
+            abs(Fc[stick, 0]) / (mu * elastic_force(gap[stick])), 0.99)
+    c.check("slide: ||F_t| / (mu F_el) - 1|",
+            abs(abs(Fc[slide, 0]) / (mu * elastic_force(gap[slide])) - 1), 1e-6)
+    c.check("slide: 0.01 - U_x / (0.3 W/(6 pi eta a)), sliding",
+            0.01 - U[slide, 0] / 0.3, 0)
+    scale = np.abs(s["position"]).max()
+    c.check("restart: |time reached - 2|", abs(r["time"] - 2), 1e-9)
+    c.check("restart: max |dx| / box", np.abs(r["position"] - s["position"]).max() / scale, 1e-9)
+    c.check("restart: max |dU| / max |U|",
+            np.abs(r["velocity"] - s["velocity"]).max() / np.abs(s["velocity"]).max(), 1e-6)
+    c.check("restart: max |dF_c| / W", np.abs(r["contactForce"] - Fc).max() / W, 1e-6)
+    return c.finish()
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1]))

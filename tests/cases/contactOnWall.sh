@@ -1,0 +1,27 @@
+#!/bin/bash
+# Case test: rough contacts with a wall (thesis 1, section 2.6).  Three unit
+# spheres pressed onto the bottom wall by W = 6 pi eta a^2: one at rest,
+# one pushed along x by 0.3 W and one by 0.8 W (both without rotation), to
+# strain-free time 2 with deltaT 0.05 (implicit tangential springs).
+# Checks in checkContactOnWall.py: normal force = W and the overlap of the
+# contact law (eq 2.57, recomputed independently), sticking below and
+# sliding at mu F_el above the Coulomb limit, and a restart from t = 1
+# (slip history in particleState) reaching the same state.
+source "${0%/*}/caseTestFunctions"
+
+work=$(caseWorkDir contactOnWall)
+cloneCase contactOnWall "$work/straight"
+(
+    cd "$work/straight" || exit 1
+    runLogged blockMesh && runLogged fdmSuspensionFoam || exit 1
+    # Restart from the state written at t = 1
+    mkdir ../restart
+    cp -r 0 1 constant system ../restart/
+    cd ../restart || exit 1
+    rm -rf 1/uniform
+    foamDictionary -entry startFrom -set latestTime system/controlDict \
+        > /dev/null
+    runLogged fdmSuspensionFoam
+) || exit 1
+
+"$FDM_PYTHON" "$caseTemplates/checkContactOnWall.py" "$work"

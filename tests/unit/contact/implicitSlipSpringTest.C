@@ -1,0 +1,82 @@
+// Unit tests for Foam::fdm::implicitSlipSpring: the sticking contact's
+// spring taken implicitly (k_t dt B^T B in the particle system)
+
+#include "implicitSlipSpring.H"
+#include "contactLoads.H"
+
+#include <gtest/gtest.h>
+
+using namespace Foam;
+
+namespace
+{
+
+// Pair of radii 1 and 1.4 touching along n at gap 0.002
+struct pairSetup
+{
+    vector n = normalised(vector(0.3, 1, -0.4));
+    scalar ai = 1, aj = 1.4, r = 2.402;
+    vector xi = vector(0.5, -0.2, 0.1);
+    vector xj = xi + r*n;
+    scalar li = ai*r/(ai + aj), lj = aj*r/(ai + aj);
+    fdm::implicitSlipSpring spring{0, 1, n, li, lj, 7.0};
+};
+
+} // namespace
+
+
+TEST(implicitSlipSpring, rigidMotionHasNoSlip)
+{
+    const pairSetup s;
+    const vector V(0.3, -1, 2), W(-0.7, 0.2, 1.1), origin(3, 1, -2);
+    const List<vector> U({V + (W ^ (s.xi - origin)), V + (W ^ (s.xj - origin))});
+    const List<vector> Omega({W, W});
+    EXPECT_NEAR(mag(s.spring.slip(U, Omega)), 0, 1e-14);
+}
+
+
+TEST(implicitSlipSpring, matrixIsTheLoadsOfTheImplicitForce)
+{
+    const pairSetup s;
+    const List<vector> U({vector(0.1, 0.2, -0.3), vector(-0.4, 0.05, 0.2)});
+    const List<vector> Omega({vector(0.3, -0.1, 0.7), vector(0.2, 0.6, -0.5)});
+
+    fdm::particleVelocitySystem system(2);
+    s.spring.addTo(system, 1);
+    List<vector> RF(2), RT(2);
+    system.multiply(U, Omega, RF, RT);
+
+    // R u is minus the loads of -k dt U_s applied through eqs 2.55, 2.64
+    List<vector> F(2, Zero), T(2, Zero);
+    List<symmTensor> S(2, Zero);
+    const fdm::contactForce c = s.spring.force(U, Omega);
+    EXPECT_NEAR(c.force & s.n, 0, 1e-15);
+    fdm::addContactLoads(c, s.n, s.li, s.lj, 0, 1, F, T, S);
+    for (label p = 0; p < 2; ++p)
+    {
+        EXPECT_NEAR(mag(RF[p] + F[p]), 0, 1e-13) << p;
+        EXPECT_NEAR(mag(RT[p] + T[p]), 0, 1e-13) << p;
+    }
+
+    // Dissipation u . R u = k dt |U_s|^2 >= 0
+    scalar power = 0;
+    for (label p = 0; p < 2; ++p)
+    {
+        power += (U[p] & RF[p]) + (Omega[p] & RT[p]);
+    }
+    EXPECT_NEAR(power, 7.0*magSqr(s.spring.slip(U, Omega)), 1e-13);
+}
+
+
+TEST(implicitSlipSpring, rollingOnAMovingWallDoesNotSlip)
+{
+    // Wall below (n = -y from the centre), moving at Uw along x
+    const vector n(0, -1, 0), Uw(2, 0, 0);
+    const fdm::implicitSlipSpring wall(0, -1, n, 1.0, 0, 5.0, Uw);
+    // Rolling: contact point velocity U + a Omega x n equals Uw
+    const List<vector> U({vector(3, 0.2, 0)});
+    const List<vector> Omega({vector(0, 0, -1)});
+    EXPECT_NEAR(mag(wall.slip(U, Omega)), 0, 1e-15);
+    const List<vector> slide({vector(3.5, 0, 0)});
+    EXPECT_NEAR(wall.slip(slide, Omega).x(), 0.5, 1e-15);
+}
