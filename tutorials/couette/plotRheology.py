@@ -58,14 +58,23 @@ def main():
     r = core_rheology(cs, args.start / gamma0)
     steady = np.nonzero(cs.t >= args.start / gamma0)[0]
 
-    # Per-particle balance F^h + F^c = 0 (eq 4.17) over the steady records
+    # Mechanical consistency (Table 4.8): wall force against the particles'
+    # lambda, lambda over the volume against the particle sum, and the
+    # per-particle force and torque balance F^h + F^c = 0 (eq 4.17), RMS
+    # over particles and steady records
+    import glob
     import h5py
     with h5py.File(f"{case}/postProcessing/particles.h5", "r") as f:
-        Fh = f["force"][steady]
-        Fc = f["contactForce"][steady]
-    touching = np.abs(Fc).sum(-1) > 0
-    imbalance = (np.sqrt(((Fh + Fc)[touching] ** 2).mean(0))
-                 / np.sqrt((Fc[touching] ** 2).mean(0))) if touching.any() else None
+        Fh, Fc = f["force"][steady], f["contactForce"][steady]
+        Th, Tc = f["torque"][steady], f["contactTorque"][steady]
+    rms = lambda a: np.sqrt((a ** 2).mean(axis=(0, 1)))  # noqa: E731
+    balance = [rms(Fh + Fc) / rms(Fc), rms(Th + Tc) / rms(Tc)]
+    mb = np.concatenate([np.loadtxt(p, ndmin=2) for p in sorted(glob.glob(
+        f"{case}/postProcessing/momentumBalance/*/momentumBalance.dat"))])
+    mb = mb[mb[:, 0] >= args.start / gamma0].mean(0)
+    lamV, parts, wall = mb[1:4], mb[4:7], mb[7:10]
+    balance = [np.abs(wall + parts) / np.abs(wall),
+               np.abs(lamV - parts) / np.abs(lamV)] + balance
 
     def pm(key, fmt=".3f"):
         m, e = r[key]
@@ -82,9 +91,13 @@ def main():
           f" 0.59): {maron_pierce(r['phiCore'][0]):.3f}")
     print(f"  N1/Sigma12 {pm('N1')}, N2/Sigma12 {pm('N2')},"
           f" contact share of Sigma12 {pm('contactShare')}")
-    if imbalance is not None:
-        print("  particle force balance |F^h + F^c|/|F^c| (eq 4.17, x y z):"
-              f" {' '.join(f'{v:.2e}' for v in imbalance)}")
+    print("  mechanical consistency (Table 4.8 columns, x y z):")
+    for name, v in zip(("wall vs particle forces |F^w - F^FDM,parts|/|F^w|",
+                        "volume vs particles |F^FDM,V - F^FDM,parts|/|F^FDM,V|",
+                        "particle force balance rms(F^h + F^c)/rms(F^c)",
+                        "particle torque balance rms(T^h + T^c)/rms(T^c)"),
+                       balance):
+        print(f"    {name}: {' '.join(f'{x:.2e}' for x in v)}")
 
     # Plots: profiles and time series
     bins = int(round(L[1] / 0.2))

@@ -1,0 +1,121 @@
+#!/usr/bin/python3
+"""Couette suspension post-processing (thesis 1, sections 2.7 and 4.2):
+core viscosity (eq 2.76) with its error bar, normal stress differences and
+contact share (eq 4.13), profiles phi(y) (eq 2.70) and u_p(y) (eq 6.4),
+per-particle force balance (eq 4.17), and PNG plots.
+
+    plotRheology.py [case] [--layer H] [--start STRAIN]
+
+Reads postProcessing/particles.h5, the box from system/blockMeshDict, the
+wall velocities from 0/U and eta = rho nu from constant/transportProperties.
+"""
+
+import argparse
+import os
+import re
+import sys
+
+import numpy as np
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from fdmPost.rheology import CouetteSeries, core_rheology, maron_pierce  # noqa: E402
+
+
+def number(text, key):
+    return float(re.search(rf"^\s*{key}\s+([^;\s]+)\s*;", text, re.M).group(1))
+
+
+def wall_velocity(text, patch):
+    block = text[text.index(patch):]
+    return float(re.search(r"uniform\s*\(\s*(\S+)", block).group(1))
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("case", nargs="?", default=".")
+    ap.add_argument("--layer", type=float, default=2.0,
+                    help="wall layer excluded from the core, in a1 (thesis 5)")
+    ap.add_argument("--start", type=float, default=0.5,
+                    help="strain gammaDot_0 t where time averages start")
+    args = ap.parse_args()
+    case = args.case
+
+    mesh = open(f"{case}/system/blockMeshDict").read()
+    L = np.array([number(mesh, k) for k in ("Lx", "Ly", "Lz")])
+    transport = open(f"{case}/constant/transportProperties").read()
+    eta = number(transport, "rho") * number(transport, "nu")
+    U0 = open(f"{case}/0/U").read()
+    gamma0 = (wall_velocity(U0, "topWall") - wall_velocity(U0, "bottomWall")) / L[1]
+
+    cs = CouetteSeries.from_h5(f"{case}/postProcessing/particles.h5",
+                               lo=(0, 0, 0), span=L, eta=eta, layer=args.layer)
+    strain = cs.t * gamma0
+    if strain[-1] <= args.start:
+        sys.exit(f"plotRheology: the run reached strain {strain[-1]:.3g}, not"
+                 f" beyond --start {args.start}")
+    r = core_rheology(cs, args.start / gamma0)
+    steady = np.nonzero(cs.t >= args.start / gamma0)[0]
+
+    # Per-particle balance F^h + F^c = 0 (eq 4.17) over the steady records
+    import h5py
+    with h5py.File(f"{case}/postProcessing/particles.h5", "r") as f:
+        Fh = f["force"][steady]
+        Fc = f["contactForce"][steady]
+    touching = np.abs(Fc).sum(-1) > 0
+    imbalance = (np.sqrt(((Fh + Fc)[touching] ** 2).mean(0))
+                 / np.sqrt((Fc[touching] ** 2).mean(0))) if touching.any() else None
+
+    def pm(key, fmt=".3f"):
+        m, e = r[key]
+        return f"{m:{fmt}} +- {e:{fmt}}"
+
+    print(f"Couette suspension: {len(cs.a)} particles, box {L.tolist()},"
+          f" strain {strain[-1]:.2f}, averages over strain >= {args.start}"
+          f" ({r['records']} records, 5 blocks)")
+    print(f"  core (|y - Ly/2| < {L[1] / 2 - args.layer:g}): phi_core"
+          f" {pm('phiCore')}, gammaDot_core/gammaDot_0"
+          f" {r['gammaDotCore'][0] / gamma0:.3f}")
+    print(f"  core viscosity eta_core (eq 2.76): {pm('etaCore')}")
+    print(f"  thesis fit at this phi_core (Maron-Pierce, alpha 0.803, phi_J"
+          f" 0.59): {maron_pierce(r['phiCore'][0]):.3f}")
+    print(f"  N1/Sigma12 {pm('N1')}, N2/Sigma12 {pm('N2')},"
+          f" contact share of Sigma12 {pm('contactShare')}")
+    if imbalance is not None:
+        print("  particle force balance |F^h + F^c|/|F^c| (eq 4.17, x y z):"
+              f" {' '.join(f'{v:.2e}' for v in imbalance)}")
+
+    # Plots: profiles and time series
+    bins = int(round(L[1] / 0.2))
+    yb, phi, up = cs.profiles(bins, steady)
+    g, phic, hp, c = cs.series()
+    fig, ax = plt.subplots(1, 3, figsize=(12, 3.8))
+    ax[0].plot(phi, yb, "-")
+    ax[0].axhspan(0, args.layer, color="0.9")
+    ax[0].axhspan(L[1] - args.layer, L[1], color="0.9")
+    ax[0].set_xlabel(r"$\phi(y)$")
+    ax[0].set_ylabel(r"$y/a_1$")
+    ax[0].set_title("volume fraction (eq 2.70)")
+    ax[1].plot(up, yb, "o", ms=3, mfc="none", label="particles (eq 6.4)")
+    ax[1].plot(gamma0 * (yb - L[1] / 2), yb, "k--", label=r"imposed $\dot\gamma_0 y$")
+    ax[1].set_xlabel(r"$u_{p,x}$")
+    ax[1].set_title("particle velocity")
+    ax[1].legend(fontsize=8)
+    sxy = eta * g + hp[:, 0, 1] + c[:, 0, 1]
+    ax[2].plot(strain, sxy / (eta * g), label=r"$\eta_{core}$ (instantaneous)")
+    ax[2].plot(strain, c[:, 0, 1] / (eta * g), label=r"contact part $\Sigma^c_{xy}/\eta\dot\gamma$")
+    ax[2].axhline(r["etaCore"][0], color="k", lw=0.8, ls="--",
+                  label=f"mean {r['etaCore'][0]:.2f}")
+    ax[2].axvline(args.start, color="0.6", lw=0.8)
+    ax[2].set_xlabel(r"strain $\dot\gamma_0 t$")
+    ax[2].set_title("core stress")
+    ax[2].legend(fontsize=8)
+    fig.tight_layout()
+    out = os.path.join(case, "rheology.png")
+    fig.savefig(out, dpi=110)
+    print(f"  wrote {out}")
+
+
+if __name__ == "__main__":
+    main()
