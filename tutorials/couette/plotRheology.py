@@ -12,7 +12,6 @@ wall velocities from 0/U and eta = rho nu from constant/transportProperties.
 
 import argparse
 import os
-import re
 import sys
 
 import numpy as np
@@ -20,16 +19,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from fdmPost.rheology import CouetteSeries, core_rheology, maron_pierce  # noqa: E402
-
-
-def number(text, key):
-    return float(re.search(rf"^\s*{key}\s+([^;\s]+)\s*;", text, re.M).group(1))
-
-
-def wall_velocity(text, patch):
-    block = text[text.index(patch):]
-    return float(re.search(r"uniform\s*\(\s*(\S+)", block).group(1))
+from fdmPost.rheology import couette_case, core_rheology, maron_pierce  # noqa: E402
 
 
 def main():
@@ -42,15 +32,8 @@ def main():
     args = ap.parse_args()
     case = args.case
 
-    mesh = open(f"{case}/system/blockMeshDict").read()
-    L = np.array([number(mesh, k) for k in ("Lx", "Ly", "Lz")])
-    transport = open(f"{case}/constant/transportProperties").read()
-    eta = number(transport, "rho") * number(transport, "nu")
-    U0 = open(f"{case}/0/U").read()
-    gamma0 = (wall_velocity(U0, "topWall") - wall_velocity(U0, "bottomWall")) / L[1]
-
-    cs = CouetteSeries.from_h5(f"{case}/postProcessing/particles.h5",
-                               lo=(0, 0, 0), span=L, eta=eta, layer=args.layer)
+    cs, gamma0 = couette_case(case, args.layer)
+    L, eta = cs.span, cs.eta
     strain = cs.t * gamma0
     if strain[-1] <= args.start:
         sys.exit(f"plotRheology: the run reached strain {strain[-1]:.3g}, not"

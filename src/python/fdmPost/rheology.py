@@ -9,6 +9,8 @@ x, vorticity along z.  Stresses in the units of the run (Pa when the
 stresslets are in N m and lengths in m).
 """
 
+import re
+
 import numpy as np
 
 
@@ -163,3 +165,41 @@ def core_rheology(cs, start_time, blocks=5):
 def maron_pierce(phi, alpha=0.803, phi_j=0.59):
     """Thesis fit eq 4.12: eta = alpha/(1 - phi/phi_J)^2."""
     return alpha / (1 - np.asarray(phi) / phi_j) ** 2
+
+
+def number(text, key):
+    """The value of a top-level "key value;" entry of an OpenFOAM dictionary."""
+    return float(re.search(rf"^\s*{key}\s+([^;\s]+)\s*;", text, re.M).group(1))
+
+
+def _wall_velocity(text, patch):
+    block = text[text.index(patch):]
+    return float(re.search(r"uniform\s*\(\s*(\S+)", block).group(1))
+
+
+def couette_case(case, layer):
+    """The particle series of a Couette case directory and its imposed
+    shear rate: box from system/blockMeshDict (Lx Ly Lz from the origin),
+    eta = rho nu from constant/transportProperties, wall velocities of
+    bottomWall and topWall from 0/U."""
+    mesh = open(f"{case}/system/blockMeshDict").read()
+    L = np.array([number(mesh, k) for k in ("Lx", "Ly", "Lz")])
+    transport = open(f"{case}/constant/transportProperties").read()
+    eta = number(transport, "rho") * number(transport, "nu")
+    U0 = open(f"{case}/0/U").read()
+    gamma0 = (_wall_velocity(U0, "topWall")
+              - _wall_velocity(U0, "bottomWall")) / L[1]
+    cs = CouetteSeries.from_h5(f"{case}/postProcessing/particles.h5",
+                               lo=(0, 0, 0), span=L, eta=eta, layer=layer)
+    return cs, gamma0
+
+
+def morris_boulay(phi, phi_m=0.68, Kn=0.75, Ks=0.1, l2=0.8, l3=0.5):
+    """Morris & Boulay (1999) closures (spec anchors): relative shear
+    viscosity and the normal stress differences over the shear stress,
+    N1/Sigma12 = -(1 - l2) eta_n/eta_s, N2/Sigma12 = -(l2 - l3) eta_n/eta_s
+    (particle normal stress -eta_n gammaDot diag(1, l2, l3))."""
+    r = np.asarray(phi) / phi_m
+    eta_n = Kn * r**2 / (1 - r) ** 2
+    eta_s = 1 + 2.5 * phi / (1 - r) + Ks * r**2 / (1 - r) ** 2
+    return eta_s, -(1 - l2) * eta_n / eta_s, -(l2 - l3) * eta_n / eta_s
