@@ -31,6 +31,7 @@ def last(path):
 def main(work):
     s = last(f"{work}/straight/postProcessing/particles.h5")
     r = last(f"{work}/restart/postProcessing/particles.h5")
+    par = last(f"{work}/parallel/postProcessing/particles.h5")
     gap = s["position"][:, 1] - 1
     Fc, U = s["contactForce"], s["velocity"]
     rest, stick, slide = 0, 1, 2
@@ -67,6 +68,9 @@ def main(work):
     c.check("restart: max |dU| / max |U|",
             np.abs(r["velocity"] - s["velocity"]).max() / np.abs(s["velocity"]).max(), 1e-6)
     c.check("restart: max |dF_c| / W", np.abs(r["contactForce"] - Fc).max() / W, 1e-6)
+    c.check("2 ranks: max |dU| / max |U|",
+            np.abs(par["velocity"] - s["velocity"]).max() / np.abs(s["velocity"]).max(), 1e-5)
+    c.check("2 ranks: max |dF_c| / W", np.abs(par["contactForce"] - Fc).max() / W, 1e-5)
     return c.finish()
 
 

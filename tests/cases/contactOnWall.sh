@@ -5,8 +5,9 @@
 # strain-free time 2 with deltaT 0.05 (implicit tangential springs).
 # Checks in checkContactOnWall.py: normal force = W and the overlap of the
 # contact law (eq 2.57, recomputed independently), sticking below and
-# sliding at mu F_el above the Coulomb limit, and a restart from t = 1
-# (slip history in particleState) reaching the same state.
+# sliding at mu F_el above the Coulomb limit, a restart from t = 1 (slip
+# history in particleState) reaching the same state, and the same run on 2
+# MPI ranks cut through the middle sphere matching the serial one.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir contactOnWall)
@@ -22,6 +23,11 @@ cloneCase contactOnWall "$work/straight"
     foamDictionary -entry startFrom -set latestTime system/controlDict \
         > /dev/null
     runLogged fdmSuspensionFoam
+) || exit 1
+cloneCase contactOnWall "$work/parallel"
+(
+    cd "$work/parallel" || exit 1
+    runLogged blockMesh && runLogged decomposePar && runParallel2 fdmSuspensionFoam
 ) || exit 1
 
 "$FDM_PYTHON" "$caseTemplates/checkContactOnWall.py" "$work"
