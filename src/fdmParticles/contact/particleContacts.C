@@ -155,15 +155,13 @@ void Foam::particleContacts::update
                 c, g.normal, armI, armJ, k.first, j, force_, torque_,
                 stresslet_
             );
-            if (c.tangentialStiffness > 0)
-            {
-                springs_.emplace_back
-                (
-                    k.first, j, g.normal, armI, armJ,
-                    c.tangentialStiffness*dt,
-                    wall < 0 ? vector::zero : wallVelocity[wall]
-                );
-            }
+            springs_.emplace_back
+            (
+                k.first, j, g.normal, armI, armJ,
+                law_->normalStiffness(g.gap, g.floorGap)*dt,
+                c.tangentialStiffness*dt,
+                wall < 0 ? vector::zero : wallVelocity[wall]
+            );
             ++(wall < 0 ? nPairs_ : nWalls_);
             nSliding_ += c.sliding;
             nBelowFloor_ += c.belowFloor;
@@ -246,7 +244,7 @@ void Foam::particleContacts::addTo
     const scalar scale
 ) const
 {
-    for (const fdm::implicitSlipSpring& s : springs_)
+    for (const fdm::implicitContactSpring& s : springs_)
     {
         s.addTo(system, scale);
     }
@@ -262,7 +260,7 @@ void Foam::particleContacts::addImplicitLoads
     List<symmTensor>& stresslet
 ) const
 {
-    for (const fdm::implicitSlipSpring& s : springs_)
+    for (const fdm::implicitContactSpring& s : springs_)
     {
         fdm::addContactLoads
         (

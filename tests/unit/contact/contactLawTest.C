@@ -107,6 +107,21 @@ TEST(contactLaw, barrierKeepsGapsAboveTheFloor)
 }
 
 
+TEST(contactLaw, normalStiffnessIsTheDerivativeOfTheForce)
+{
+    const auto c = law(thesis);
+    for (const scalar gap : {0.9*hr, 0.5*hr, 0.1*hr, 0.01*hr, 3e-5})
+    {
+        const scalar h = 1e-7*gap;
+        const scalar fd =
+            (c->elasticNormalForce(gap - h, floorGap)
+           - c->elasticNormalForce(gap + h, floorGap))/(2*h);
+        EXPECT_NEAR(c->normalStiffness(gap, floorGap)/fd, 1, 1e-6) << gap;
+    }
+    EXPECT_EQ(c->normalStiffness(1.1*hr, floorGap), 0);
+}
+
+
 TEST(contactLaw, stiffnessFromTheDeformationRule)
 {
     // 6 pi eta gammaDot a_1^2 = k_n (eps h_r)^1.5 (thesis 2.6.3)

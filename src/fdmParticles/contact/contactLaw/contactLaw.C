@@ -157,6 +157,33 @@ Foam::scalar Foam::fdm::contactLaw::elasticNormalForce
 }
 
 
+Foam::scalar Foam::fdm::contactLaw::normalStiffness
+(
+    const scalar gap,
+    const scalar floorGap
+) const
+{
+    if (!touching(gap))
+    {
+        return 0;
+    }
+    // F = k_n A delta^1.5/D with A = 1 - exp[10(d - 1)], D = 1 - exp(-10x),
+    // x = gap/h_r - d:  -dF/dgap = k_n A [1.5 delta^0.5/D
+    //                                     + delta^1.5 (10/h_r) exp(-10x)/D^2]
+    const scalar delta = roughness_ - gap;
+    const scalar d = floorGap/roughness_;
+    const scalar x = max(gap/roughness_ - d, 1e-6);
+    const scalar A = 1 - std::exp(10*(d - 1));
+    const scalar D = -std::expm1(-10*x);
+    return
+        kn_*A
+       *(
+            1.5*std::sqrt(delta)/D
+          + pow(delta, 1.5)*(10/roughness_)*std::exp(-10*x)/sqr(D)
+        );
+}
+
+
 Foam::fdm::contactForce Foam::fdm::contactLaw::evaluate
 (
     const contactGeometry& g,

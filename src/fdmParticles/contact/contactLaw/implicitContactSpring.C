@@ -3,19 +3,20 @@
   License: GPL-3.0-or-later (see LICENSE)
 \*---------------------------------------------------------------------------*/
 
-#include "implicitSlipSpring.H"
+#include "implicitContactSpring.H"
 #include "tensor.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fdm::implicitSlipSpring::implicitSlipSpring
+Foam::fdm::implicitContactSpring::implicitContactSpring
 (
     const label i,
     const label j,
     const vector& normal,
     const scalar armI,
     const scalar armJ,
-    const scalar stiffnessTimesDt,
+    const scalar normalStiffnessTimesDt,
+    const scalar tangentialStiffnessTimesDt,
     const vector& wallVelocity
 )
 :
@@ -24,17 +25,19 @@ Foam::fdm::implicitSlipSpring::implicitSlipSpring
     n_(normal),
     armI_(armI),
     armJ_(armJ),
-    k_(stiffnessTimesDt),
+    kn_(normalStiffnessTimesDt),
+    kt_(tangentialStiffnessTimesDt),
     wallVelocity_(wallVelocity)
 {}
 
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-void Foam::fdm::implicitSlipSpring::slipOperator(scalar B[3][12]) const
+void Foam::fdm::implicitContactSpring::operators(scalar B[4][12]) const
 {
     // U_s = P U_i - l_i [n]x Omega_i - P U_j - l_j [n]x Omega_j, with
-    // P = I - n n and [n]x v = n x v (Omega x n = -n x Omega)
+    // P = I - n n and [n]x v = n x v (Omega x n = -n x Omega);
+    // w = n.U_i - n.U_j
     const tensor P = tensor::I - sqr(n_);
     const tensor N
     (
@@ -52,12 +55,19 @@ void Foam::fdm::implicitSlipSpring::slipOperator(scalar B[3][12]) const
             B[r][9 + c] = -armJ_*N(r, c);
         }
     }
+    for (label c = 0; c < 3; ++c)
+    {
+        B[3][c] = n_[c];
+        B[3][3 + c] = 0;
+        B[3][6 + c] = -n_[c];
+        B[3][9 + c] = 0;
+    }
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::vector Foam::fdm::implicitSlipSpring::slip
+Foam::vector Foam::fdm::implicitContactSpring::slip
 (
     const UList<vector>& U,
     const UList<vector>& Omega
@@ -70,14 +80,24 @@ Foam::vector Foam::fdm::implicitSlipSpring::slip
 }
 
 
-void Foam::fdm::implicitSlipSpring::addTo
+Foam::scalar Foam::fdm::implicitContactSpring::approach
+(
+    const UList<vector>& U
+) const
+{
+    return n_ & (U[i_] - (j_ >= 0 ? U[j_] : wallVelocity_));
+}
+
+
+void Foam::fdm::implicitContactSpring::addTo
 (
     particleVelocitySystem& system,
     const scalar scale
 ) const
 {
-    scalar B[3][12];
-    slipOperator(B);
+    scalar B[4][12];
+    operators(B);
+    const scalar weight[4] = {kt_, kt_, kt_, kn_};
 
     const label n = particleVelocitySystem::nDof;
     const label nCols = j_ >= 0 ? 12 : 6;
@@ -90,43 +110,46 @@ void Foam::fdm::implicitSlipSpring::addTo
         for (label b = 0; b < nCols; ++b)
         {
             scalar m = 0;
-            for (label r = 0; r < 3; ++r)
+            for (label r = 0; r < 4; ++r)
             {
-                m += B[r][a]*B[r][b];
+                m += weight[r]*B[r][a]*B[r][b];
             }
             if (m != 0)
             {
-                system.addEntry(global(a), global(b), scale*k_*m);
+                system.addEntry(global(a), global(b), scale*m);
             }
         }
     }
 
     if (j_ < 0)
     {
-        // The wall part of -k dt B^T (B_i u_i - P U_w) is a known load
+        // The wall part of the implicit force, -K (B_i u_i - B_w U_w), is
+        // a known load: B_w U_w = (P U_w, n.U_w)
         const vector PUw = wallVelocity_ - (wallVelocity_ & n_)*n_;
+        const scalar wallRows[4] =
+            {kt_*PUw.x(), kt_*PUw.y(), kt_*PUw.z(), kn_*(n_ & wallVelocity_)};
         vector F(Zero), T(Zero);
         for (label c = 0; c < 3; ++c)
         {
-            for (label r = 0; r < 3; ++r)
+            for (label r = 0; r < 4; ++r)
             {
-                F[c] += B[r][c]*PUw[r];
-                T[c] += B[r][3 + c]*PUw[r];
+                F[c] += B[r][c]*wallRows[r];
+                T[c] += B[r][3 + c]*wallRows[r];
             }
         }
-        system.addRhs(i_, scale*k_*F, scale*k_*T);
+        system.addRhs(i_, scale*F, scale*T);
     }
 }
 
 
-Foam::fdm::contactForce Foam::fdm::implicitSlipSpring::force
+Foam::fdm::contactForce Foam::fdm::implicitContactSpring::force
 (
     const UList<vector>& U,
     const UList<vector>& Omega
 ) const
 {
-    const vector Ft = -k_*slip(U, Omega);
-    return contactForce{Ft, Ft, 0, false, false, 0};
+    const vector Ft = -kt_*slip(U, Omega);
+    return contactForce{Ft - kn_*approach(U)*n_, Ft, 0, false, false, 0};
 }
 
 
