@@ -137,6 +137,28 @@ Foam::autoPtr<Foam::fdm::contactLaw> Foam::fdm::contactLaw::New
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::fdm::contactLaw::barrierTerms Foam::fdm::contactLaw::barrier
+(
+    const scalar gap,
+    const scalar floorGap
+) const
+{
+    // Eq 2.57: F = k_n delta^1.5 A/D, A = 1 - exp[10(d - 1)],
+    // D = 1 - exp(-10 x), x = gap/h_r - d the distance to the floor in
+    // units of h_r, kept positive: at 1e-6 the barrier multiplies the Hertz
+    // force by about 1e5
+    const scalar d = floorGap/roughness_;
+    const scalar x = max(gap/roughness_ - d, 1e-6);
+    return barrierTerms
+    {
+        roughness_ - gap,
+        1 - std::exp(10*(d - 1)),
+        -std::expm1(-10*x),
+        std::exp(-10*x)
+    };
+}
+
+
 Foam::scalar Foam::fdm::contactLaw::elasticNormalForce
 (
     const scalar gap,
@@ -147,13 +169,8 @@ Foam::scalar Foam::fdm::contactLaw::elasticNormalForce
     {
         return 0;
     }
-    const scalar delta = roughness_ - gap;
-    const scalar d = floorGap/roughness_;
-    // Distance to the floor in units of h_r, kept positive: at 1e-6 the
-    // barrier multiplies the Hertz force by about 1e5
-    const scalar x = max(gap/roughness_ - d, 1e-6);
-    const scalar barrier = (1 - std::exp(10*(d - 1)))/(-std::expm1(-10*x));
-    return kn_*pow(delta, 1.5)*barrier;
+    const barrierTerms b = barrier(gap, floorGap);
+    return kn_*pow(b.delta, 1.5)*b.A/b.D;
 }
 
 
@@ -167,19 +184,13 @@ Foam::scalar Foam::fdm::contactLaw::normalStiffness
     {
         return 0;
     }
-    // F = k_n A delta^1.5/D with A = 1 - exp[10(d - 1)], D = 1 - exp(-10x),
-    // x = gap/h_r - d:  -dF/dgap = k_n A [1.5 delta^0.5/D
-    //                                     + delta^1.5 (10/h_r) exp(-10x)/D^2]
-    const scalar delta = roughness_ - gap;
-    const scalar d = floorGap/roughness_;
-    const scalar x = max(gap/roughness_ - d, 1e-6);
-    const scalar A = 1 - std::exp(10*(d - 1));
-    const scalar D = -std::expm1(-10*x);
+    // -dF/d(gap) = k_n A [1.5 delta^0.5/D + delta^1.5 (10/h_r) exp(-10x)/D^2]
+    const barrierTerms b = barrier(gap, floorGap);
     return
-        kn_*A
+        kn_*b.A
        *(
-            1.5*std::sqrt(delta)/D
-          + pow(delta, 1.5)*(10/roughness_)*std::exp(-10*x)/sqr(D)
+            1.5*std::sqrt(b.delta)/b.D
+          + pow(b.delta, 1.5)*(10/roughness_)*b.expX/sqr(b.D)
         );
 }
 
