@@ -2,7 +2,7 @@
 # Case test: rough contacts with a wall (thesis 1, section 2.6).  Three unit
 # spheres pressed onto the bottom wall by W = 6 pi eta a^2: one at rest,
 # one pushed along x by 0.3 W and one by 0.8 W (both without rotation), to
-# strain-free time 2 with deltaT 0.05 (implicit tangential springs).
+# time 2 with deltaT 0.05 (implicit contact stiffness).
 # Checks in checkContactOnWall.py: normal force = W and the overlap of the
 # contact law (eq 2.57, recomputed independently), sticking below and
 # sliding at mu F_el above the Coulomb limit, a restart from t = 1 (slip
