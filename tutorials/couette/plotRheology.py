@@ -11,8 +11,11 @@ wall velocities from 0/U and eta = rho nu from constant/transportProperties.
 """
 
 import argparse
+import glob
 import os
 import sys
+
+import h5py
 
 import numpy as np
 import matplotlib
@@ -45,8 +48,6 @@ def main():
     # lambda, lambda over the volume against the particle sum, and the
     # per-particle force and torque balance F^h + F^c = 0 (eq 4.17), RMS
     # over particles and steady records
-    import glob
-    import h5py
     with h5py.File(f"{case}/postProcessing/particles.h5", "r") as f:
         Fh, Fc = f["force"][steady], f["contactForce"][steady]
         Th, Tc = f["torque"][steady], f["contactTorque"][steady]
