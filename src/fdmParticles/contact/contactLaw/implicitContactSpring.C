@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "implicitContactSpring.H"
-#include "tensor.H"
+#include "resistanceTensorForms.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -35,16 +35,11 @@ Foam::fdm::implicitContactSpring::implicitContactSpring
 
 void Foam::fdm::implicitContactSpring::operators(scalar B[4][12]) const
 {
-    // U_s = P U_i - l_i [n]x Omega_i - P U_j - l_j [n]x Omega_j, with
-    // P = I - n n and [n]x v = n x v (Omega x n = -n x Omega);
+    // U_s = P U_i - l_i N Omega_i - P U_j - l_j N Omega_j, with
+    // P = I - n n and N v = n x v = -eps_ijk n_k v_j (Omega x n = -n x Omega);
     // w = n.U_i - n.U_j
-    const tensor P = tensor::I - sqr(n_);
-    const tensor N
-    (
-        0, -n_.z(), n_.y(),
-        n_.z(), 0, -n_.x(),
-        -n_.y(), n_.x(), 0
-    );
+    const tensor P = axialForm(0, 1, n_);
+    const tensor N = epsilonForm(-1, n_);
     for (label r = 0; r < 3; ++r)
     {
         for (label c = 0; c < 3; ++c)
