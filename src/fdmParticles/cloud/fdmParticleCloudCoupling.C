@@ -176,7 +176,7 @@ void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
 
     if (contacts_)
     {
-        contacts_->advance(position_, radius_, U_, Omega_, box_, deltaT);
+        contacts_->advance(U_, Omega_, deltaT);
     }
     forAll(position_, p)
     {

@@ -55,17 +55,6 @@ void Foam::particleContacts::forEachContact
 }
 
 
-Foam::List<Foam::vector> Foam::particleContacts::wallVelocities() const
-{
-    List<vector> Uw(walls_.size());
-    forAll(walls_.walls(), w)
-    {
-        Uw[w] = walls_.velocity(walls_.walls()[w]);
-    }
-    return Uw;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleContacts::particleContacts
@@ -129,8 +118,12 @@ void Foam::particleContacts::update
     const scalar dt
 )
 {
-    springs_.clear();
-    const List<vector> wallVelocity(wallVelocities());
+    contacts_.clear();
+    List<vector> wallVelocity(walls_.size());
+    forAll(walls_.walls(), w)
+    {
+        wallVelocity[w] = walls_.velocity(walls_.walls()[w]);
+    }
     force_ = Zero;
     torque_ = Zero;
     stresslet_ = Zero;
@@ -155,12 +148,19 @@ void Foam::particleContacts::update
                 c, g.normal, armI, armJ, k.first, j, force_, torque_,
                 stresslet_
             );
-            springs_.emplace_back
+            contacts_.push_back
             (
-                k.first, j, g.normal, armI, armJ,
-                law_->normalStiffness(g.gap, g.floorGap)*dt,
-                c.tangentialStiffness*dt,
-                wall < 0 ? vector::zero : wallVelocity[wall]
+                contactEntry
+                {
+                    k,
+                    fdm::implicitContactSpring
+                    (
+                        k.first, j, g.normal, armI, armJ,
+                        law_->normalStiffness(g.gap, g.floorGap)*dt,
+                        c.tangentialStiffness*dt,
+                        wall < 0 ? vector::zero : wallVelocity[wall]
+                    )
+                }
             );
             ++(wall < 0 ? nPairs_ : nWalls_);
             nSliding_ += c.sliding;
@@ -195,46 +195,17 @@ void Foam::particleContacts::update
 
 void Foam::particleContacts::advance
 (
-    const pointField& positions,
-    const scalarField& radii,
     const List<vector>& U,
     const List<vector>& Omega,
-    const fdm::periodicBox& box,
     const scalar dt
 )
 {
-    if (slip_.empty())
+    // The contacts of the last update, at the positions the particles are
+    // about to leave, with the slip operator of their implicit stiffness
+    for (const contactEntry& e : contacts_)
     {
-        return;
+        slip_[e.k] += dt*e.spring.slip(U, Omega);
     }
-    const List<vector> wallVelocity(wallVelocities());
-
-    forEachContact
-    (
-        positions, radii, box,
-        [&](const key& k, const fdm::contactGeometry& g, const scalar armI,
-            const scalar armJ, const label wall)
-        {
-            const auto it = slip_.find(k);
-            if (it == slip_.end())
-            {
-                return;
-            }
-            const label i = k.first;
-            const vector Us =
-                wall < 0
-              ? fdm::slipVelocity
-                (
-                    g.normal, U[i], Omega[i], armI,
-                    U[k.second], Omega[k.second], armJ
-                )
-              : fdm::slipVelocity
-                (
-                    g.normal, U[i], Omega[i], armI, wallVelocity[wall], Zero, 0
-                );
-            it->second += dt*Us;
-        }
-    );
 }
 
 
@@ -244,9 +215,9 @@ void Foam::particleContacts::addTo
     const scalar scale
 ) const
 {
-    for (const fdm::implicitContactSpring& s : springs_)
+    for (const contactEntry& e : contacts_)
     {
-        s.addTo(system, scale);
+        e.spring.addTo(system, scale);
     }
 }
 
@@ -260,8 +231,9 @@ void Foam::particleContacts::addImplicitLoads
     List<symmTensor>& stresslet
 ) const
 {
-    for (const fdm::implicitContactSpring& s : springs_)
+    for (const contactEntry& e : contacts_)
     {
+        const fdm::implicitContactSpring& s = e.spring;
         fdm::addContactLoads
         (
             s.force(U, Omega), s.normal(), s.armI(), s.armJ(), s.i(), s.j(),
