@@ -11,7 +11,6 @@ wall velocities from 0/U and eta = rho nu from constant/transportProperties.
 """
 
 import argparse
-import glob
 import os
 import sys
 
@@ -22,6 +21,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from fdmPost.particleCase import momentum_balance  # noqa: E402
 from fdmPost.rheology import couette_case, core_rheology, maron_pierce  # noqa: E402
 
 
@@ -53,10 +53,10 @@ def main():
         Th, Tc = f["torque"][steady], f["contactTorque"][steady]
     rms = lambda a: np.sqrt((a ** 2).mean(axis=(0, 1)))  # noqa: E731
     balance = [rms(Fh + Fc) / rms(Fc), rms(Th + Tc) / rms(Tc)]
-    mb = np.concatenate([np.loadtxt(p, ndmin=2) for p in sorted(glob.glob(
-        f"{case}/postProcessing/momentumBalance/*/momentumBalance.dat"))])
-    mb = mb[mb[:, 0] >= args.start / gamma0].mean(0)
-    lamV, parts, wall = mb[1:4], mb[4:7], mb[7:10]
+    mb = momentum_balance(case)
+    late = mb["time"] >= args.start / gamma0
+    lamV, parts, wall = (mb[k][late].mean(0)
+                         for k in ("lambdaV", "lambdaParts", "wall"))
     balance = [np.abs(wall + parts) / np.abs(wall),
                np.abs(lamV - parts) / np.abs(lamV)] + balance
 
