@@ -289,6 +289,8 @@ Foam::fdmParticleCloud::fdmParticleCloud
     contactTorque_.setSize(size(), Zero);
     contactStresslet_.setSize(size(), Zero);
 
+    // One floor on the reduced gaps xi and epsilon for the sub-grid
+    // lubrication and the contact barrier (eq 2.57; spec 12.35)
     const scalar gapFloor = dict_.getOrDefault<scalar>("gapFloor", 1e-5);
     if (!(gapFloor > 0 && gapFloor < 0.1))
     {
@@ -304,8 +306,6 @@ Foam::fdmParticleCloud::fdmParticleCloud
 
     readState();
 
-    // One floor on the reduced gaps xi and epsilon for the sub-grid
-    // lubrication and the contact barrier (eq 2.57; spec 12.35)
     subGrid_ = subGridModel::New
     (
         dict_,

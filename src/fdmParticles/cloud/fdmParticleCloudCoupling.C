@@ -293,7 +293,7 @@ Foam::scalar Foam::fdmParticleCloud::correct
             }
         }
     }
-    // Sub-grid resistance and implicit contact springs on the left of eq
+    // Sub-grid resistance and implicit contact stiffness on the left of eq
     // 2.43, per unit fluid density
     subGrid_->addTo(system_, nu_);
     if (contacts_)
@@ -440,7 +440,7 @@ void Foam::fdmParticleCloud::finishSolve
         U_, Omega_, rhoFluid_*nu_, force_, torque_, stresslet_, dipoleTrace_
     );
 
-    // Contact loads: explicit part and the implicit springs' share at the
+    // Contact loads: explicit part and the implicit stiffness' share at the
     // solved velocities
     if (contacts_)
     {
