@@ -4,6 +4,9 @@
 # move for 4 Adams-Bashforth steps; the same case stopped after 2 steps and
 # restarted from the written time must reach the same particle state and
 # the HDF5 series must hold each step once.  Checks in checkRestart.py.
+# The suspensionStress function object runs at every write and again
+# afterwards with postProcess; checkSuspensionStress.py compares it with
+# fdmPost.rheology on the HDF5 records.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir restartContinuity)
@@ -34,6 +37,9 @@ cloneCase shearedSphere "$work/straight"
     (light (3.02 -1.48 2.97) 1)
 )
 LIST
+    foamDictionary -entry functions -add \
+        '{ stress { type suspensionStress; libs ("libfdmParticles.so");
+           wallLayer 1; bins 6; } }' system/controlDict > /dev/null
     foamDictionary -entry deltaT -set 0.05 system/controlDict > /dev/null
     foamDictionary -entry endTime -set 0.2 system/controlDict > /dev/null
     runLogged blockMesh || exit 1
@@ -52,4 +58,7 @@ cp -r "$work/straight" "$work/restarted"
     runLogged fdmSuspensionFoam
 ) || exit 1
 
-"$FDM_PYTHON" "$caseTemplates/checkRestart.py" "$work"
+(cd "$work/straight" && runLogged postProcess) || exit 1
+
+"$FDM_PYTHON" "$caseTemplates/checkRestart.py" "$work" &&
+"$FDM_PYTHON" "$caseTemplates/checkSuspensionStress.py" "$work"

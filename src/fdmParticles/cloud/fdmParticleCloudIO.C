@@ -42,6 +42,7 @@ void Foam::fdmParticleCloud::writeState() const
     os.writeEntry("nParticles", size());
     os.writeEntry("solved", solved_);
     os.writeEntry("hasHistory", hasHistory_);
+    os.writeEntry("radius", radius_);
     os.writeEntry("position", position_);
     os.writeEntry("velocity", U_);
     os.writeEntry("angularVelocity", Omega_);

@@ -298,13 +298,15 @@ def AB_interp(r):
 # trajectories
 # ---------------------------------------------------------------------------
 
-def _integrate(x0, y0, z0, rtol, atol, exact, max_time):
+def _integrate(x0, y0, z0, rtol, atol, exact, max_time, AB=None):
     from scipy.integrate import solve_ivp
     if x0 >= 0.0 or y0 <= 0.0:
         raise ValueError("need x0 < 0 and y0 > 0")
     xend = abs(x0)
 
     def rhs(t, y):
+        if AB is not None:
+            return _bg_velocity(y, *AB(float(np.linalg.norm(y))))
         return relative_velocity(y, exact=exact)
 
     def done(t, y):
@@ -330,13 +332,15 @@ def _integrate(x0, y0, z0, rtol, atol, exact, max_time):
 
 
 def trajectory(x0, y0, z0=0.0, rtol=1e-12, atol=1e-14, exact=False,
-               max_time=1e4):
+               max_time=1e4, AB=None):
     """Relative trajectory from r = (x0, y0, z0), x0 < 0, y0 > 0 (sphere 2
     upstream of sphere 1, moving in +x), until r_x = |x0|.
     Returns (t, rx, ry, rz, gap) at the DOP853 steps; the last point is the
     event point r_x = |x0|.  exact=True evaluates V by the direct solve at
-    every stage (about 1 ms each) instead of the A, B splines."""
-    sol = _integrate(x0, y0, z0, rtol, atol, exact, max_time)
+    every stage (about 1 ms each) instead of the A, B splines; AB, a
+    callable r -> (A, B), replaces both (trajectories of measured
+    mobility functions)."""
+    sol = _integrate(x0, y0, z0, rtol, atol, exact, max_time, AB)
     te, ye = sol.t_events[0][0], sol.y_events[0][0]
     keep = sol.t < te
     t = np.append(sol.t[keep], te)
@@ -347,9 +351,11 @@ def trajectory(x0, y0, z0=0.0, rtol=1e-12, atol=1e-14, exact=False,
 
 def trajectory_summary(x0, y0, z0=0.0, **kw):
     """dict: ry_end, rz_end, t_end, min_gap (minimum of |r| - 2 refined on
-    the dense output by golden-section search), r_at_min."""
+    the dense output by golden-section search), r_at_min.  Keywords as
+    trajectory()."""
     sol = _integrate(x0, y0, z0, kw.get("rtol", 1e-12), kw.get("atol", 1e-14),
-                     kw.get("exact", False), kw.get("max_time", 1e4))
+                     kw.get("exact", False), kw.get("max_time", 1e4),
+                     kw.get("AB"))
     te, ye = sol.t_events[0][0], sol.y_events[0][0]
     ts_ = sol.t[sol.t < te]
     gaps = np.linalg.norm(sol.y[:, sol.t < te], axis=0) - 2.0
