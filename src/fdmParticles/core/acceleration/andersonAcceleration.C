@@ -7,6 +7,27 @@
 
 #include <Eigen/Dense>
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- This processor's part of a . b, without a temporary field
+Foam::scalar localDot(const Foam::scalarField& a, const Foam::scalarField& b)
+{
+    const Foam::scalar* __restrict__ pa = a.cdata();
+    const Foam::scalar* __restrict__ pb = b.cdata();
+    Foam::scalar s = 0;
+    for (Foam::label k = 0; k < a.size(); ++k)
+    {
+        s += pa[k]*pb[k];
+    }
+    return s;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fdm::andersonAcceleration::andersonAcceleration
@@ -16,8 +37,61 @@ Foam::fdm::andersonAcceleration::andersonAcceleration
 )
 :
     depth_(depth),
-    reduce_(reduce)
+    reduce_(reduce),
+    gram_(depth*depth, Zero)
 {}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fdm::andersonAcceleration::appendDifferences
+(
+    const scalarField& x,
+    const scalarField& g
+)
+{
+    const label n = g.size();
+    scalarField dF, dG;
+    if (dF_.size() == depth_)
+    {
+        // Drop the oldest difference, reusing its storage, and shift the
+        // Gram matrix with it
+        dF.transfer(dF_[0]);
+        dG.transfer(dG_[0]);
+        for (label i = 1; i < depth_; ++i)
+        {
+            dF_[i - 1].transfer(dF_[i]);
+            dG_[i - 1].transfer(dG_[i]);
+            for (label j = 1; j < depth_; ++j)
+            {
+                gram_[(i - 1)*depth_ + j - 1] = gram_[i*depth_ + j];
+            }
+        }
+        dF_.setSize(depth_ - 1);
+        dG_.setSize(depth_ - 1);
+    }
+    else
+    {
+        dF.setSize(n);
+        dG.setSize(n);
+    }
+
+    // One pass: the differences and the new previous values
+    for (label k = 0; k < n; ++k)
+    {
+        const scalar f = g[k] - x[k];
+        dF[k] = f - fPrev_[k];
+        dG[k] = g[k] - gPrev_[k];
+        fPrev_[k] = f;
+        gPrev_[k] = g[k];
+    }
+
+    const label m = dF_.size();
+    dF_.setSize(m + 1);
+    dG_.setSize(m + 1);
+    dF_[m].transfer(dF);
+    dG_[m].transfer(dG);
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -37,26 +111,17 @@ void Foam::fdm::andersonAcceleration::update
     scalarField& g
 )
 {
-    const scalarField f(g - x);
-
-    if (gPrev_.size() == g.size())
+    const bool appended = (gPrev_.size() == g.size());
+    if (appended)
     {
-        if (dF_.size() == depth_)
-        {
-            // Drop the oldest difference
-            for (label i = 1; i < depth_; ++i)
-            {
-                dF_[i - 1].transfer(dF_[i]);
-                dG_[i - 1].transfer(dG_[i]);
-            }
-            dF_.setSize(depth_ - 1);
-            dG_.setSize(depth_ - 1);
-        }
-        dF_.append(scalarField(f - fPrev_));
-        dG_.append(scalarField(g - gPrev_));
+        appendDifferences(x, g);
     }
-    gPrev_ = g;
-    fPrev_ = f;
+    else
+    {
+        gPrev_ = g;
+        fPrev_ = g - x;
+    }
+    const scalarField& f = fPrev_;
 
     const label m = dF_.size();
     if (m == 0)
@@ -64,18 +129,27 @@ void Foam::fdm::andersonAcceleration::update
         return;
     }
 
-    // Normal equations (dF^T dF) gamma = dF^T f, summed over processors
-    List<scalar> dots(m*m + m, Zero);
+    // Partial sums of the new Gram row dF_{m-1} . dF_j and of the
+    // right-hand side dF_i . f, summed over processors in one reduction
+    List<scalar> dots(2*m, Zero);
     for (label i = 0; i < m; ++i)
     {
-        for (label j = 0; j <= i; ++j)
+        if (appended)
         {
-            dots[i*m + j] = sum(dF_[i]*dF_[j]);
+            dots[i] = localDot(dF_[m - 1], dF_[i]);
         }
-        dots[m*m + i] = sum(dF_[i]*f);
+        dots[m + i] = localDot(dF_[i], f);
     }
     reduce_(dots);
+    if (appended)
+    {
+        for (label j = 0; j < m; ++j)
+        {
+            gram_[(m - 1)*depth_ + j] = dots[j];
+        }
+    }
 
+    // Normal equations (dF^T dF) gamma = dF^T f
     Eigen::MatrixXd A(m, m);
     Eigen::VectorXd b(m);
     scalar trace = 0;
@@ -83,9 +157,9 @@ void Foam::fdm::andersonAcceleration::update
     {
         for (label j = 0; j <= i; ++j)
         {
-            A(i, j) = A(j, i) = dots[i*m + j];
+            A(i, j) = A(j, i) = gram_[i*depth_ + j];
         }
-        b(i) = dots[m*m + i];
+        b(i) = dots[m + i];
         trace += A(i, i);
     }
     if (!(trace > 0))
@@ -95,9 +169,16 @@ void Foam::fdm::andersonAcceleration::update
     A += (1e-12*trace/m)*Eigen::MatrixXd::Identity(m, m);
     const Eigen::VectorXd gamma = A.ldlt().solve(b);
 
-    for (label i = 0; i < m; ++i)
+    // g -= dG gamma in one pass
+    scalar* __restrict__ pg = g.data();
+    for (label k = 0; k < g.size(); ++k)
     {
-        g -= gamma(i)*dG_[i];
+        scalar s = 0;
+        for (label i = 0; i < m; ++i)
+        {
+            s += gamma(i)*dG_[i][k];
+        }
+        pg[k] -= s;
     }
 }
 
