@@ -95,5 +95,11 @@ expectFatal contactStiffnessTwice $pp \
 expectFatal contactRoughTooLarge $pp \
     '$a contact { roughness 0.5; friction 0.5; kn 1e4; }' \
     "roughness 0.5" "0 < roughness < 0.1"
+expectFatal stressFunctionAxis system/controlDict \
+    '$a functions { stress { type suspensionStress; libs ("libfdmParticles.so"); normal w; } }' \
+    "keyword normal is w" "allowed: x, y, z"
+expectFatal stressFunctionLayer system/controlDict \
+    '$a functions { stress { type suspensionStress; libs ("libfdmParticles.so"); wallLayer 6; } }' \
+    "keyword wallLayer is 6" "0 <= wallLayer < half the channel height"
 
 [ "$failures" -eq 0 ]
