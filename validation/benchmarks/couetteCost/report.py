@@ -8,17 +8,17 @@ scheme at equal lambda residual, and memory per 10^6 cells."""
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-MCELLS = 1.0            # the benchmark mesh: 100^3 cells
 PUBLISHED = (38, 84)
 THESIS_DT = 1e-4
 
 
-def core_s(r):
-    """Core-seconds per step per 10^6 cells."""
-    return r["total"] * r["nprocs"] / MCELLS
+def main(rows, base, mcells):
+    """rows from run.py; base: the base case; mcells: cells / 10^6."""
 
+    def core_s(r):
+        """Core-seconds per step per 10^6 cells."""
+        return r["total"] * r["nprocs"] / mcells
 
-def main(rows, base):
     with open(os.path.join(base, "constant", "particleList")) as f:
         n = next(int(w) for w in f if w.strip().isdigit())
     lines = [
@@ -44,7 +44,7 @@ def main(rows, base):
                 r["name"], r["dt"], r["nprocs"], r["outer"], r["residual"],
                 r["total"], r["flow"], r["forcing"], r["particles"],
                 r["acceleration"], r["output"], r["rest"], core_s(r),
-                core_s(r) / r["dt"], mem, mem * r["nprocs"] / 1024.0 / MCELLS))
+                core_s(r) / r["dt"], mem, mem * r["nprocs"] / 1024.0 / mcells))
     lines += ["", "Published (thesis 1, Table 4.9, gammaDot dt = 1e-4): "
               "%d-%d core-seconds per step per 10^6 cells, ~10 loops per "
               "step, i.e. %.0e-%.0e core-seconds per strain per 10^6 cells."
