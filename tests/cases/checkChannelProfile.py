@@ -25,11 +25,8 @@ import sys
 
 import numpy as np
 
+from fdmPost.checks import rel_linf
 from fdmPost.foamFields import read_internal_field
-
-
-def rel_linf(u, ref):
-    return np.abs(u - ref).max() / np.abs(ref).max()
 
 
 def main():

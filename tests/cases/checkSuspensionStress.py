@@ -20,7 +20,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
-from fdmPost.checks import Checks  # noqa: E402
+from fdmPost.checks import Checks, rel_linf as rel  # noqa: E402
 from fdmPost.rheology import CouetteSeries  # noqa: E402
 
 work = sys.argv[1]
@@ -35,11 +35,6 @@ def rows(case, pattern):
     if not files:
         raise FileNotFoundError("no %s in %s" % (pattern, case))
     return np.atleast_2d(np.loadtxt(files[0]))
-
-
-def rel(a, b):
-    a, b = np.asarray(a, float), np.asarray(b, float)
-    return np.abs(a - b).max() / max(np.abs(b).max(), 1e-300)
 
 
 straight = os.path.join(work, "straight")

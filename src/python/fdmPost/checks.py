@@ -3,6 +3,14 @@ prints its measured value with its tolerance."""
 
 import sys
 
+import numpy as np
+
+
+def rel_linf(a, ref):
+    """max |a - ref| / max |ref| (relative L-infinity difference)."""
+    a, ref = np.asarray(a, float), np.asarray(ref, float)
+    return np.abs(a - ref).max() / max(np.abs(ref).max(), 1e-300)
+
 
 class Checks:
     """Collect checks; finish() exits 1 if any failed."""
