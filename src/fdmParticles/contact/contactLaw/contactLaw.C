@@ -5,7 +5,7 @@
 
 #include "contactLaw.H"
 #include "mathematicalConstants.H"
-#include "OStringStream.H"
+#include "readBounded.H"
 
 namespace Foam
 {
@@ -14,46 +14,6 @@ namespace fdm
     defineTypeNameAndDebug(contactLaw, 0);
     defineRunTimeSelectionTable(contactLaw, dictionary);
 }
-}
-
-
-// * * * * * * * * * * * * Protected Member Functions  * * * * * * * * * * * //
-
-Foam::scalar Foam::fdm::contactLaw::readBounded
-(
-    const dictionary& dict,
-    const word& key,
-    const scalar lo,
-    const scalar hi,
-    const string& meaning
-)
-{
-    if (!dict.found(key))
-    {
-        FatalIOErrorInFunction(dict)
-            << "Missing keyword " << key << " in " << dict.name() << ": "
-            << meaning << exit(FatalIOError);
-    }
-    const scalar x = dict.get<scalar>(key);
-    if (!(x >= lo && x < hi))
-    {
-        // lo = VSMALL stands for "> 0", hi = GREAT for no upper bound
-        OStringStream range;
-        range << (lo == VSMALL ? "0 < " : "") << key;
-        if (lo != VSMALL)
-        {
-            range << " >= " << lo;
-        }
-        if (hi != GREAT)
-        {
-            range << " < " << hi;
-        }
-        FatalIOErrorInFunction(dict)
-            << key << ' ' << x << " in " << dict.name()
-            << ": allowed values are " << range.str().c_str()
-            << " (" << meaning << ")" << exit(FatalIOError);
-    }
-    return x;
 }
 
 

@@ -7,6 +7,7 @@
 #include "labelList.H"
 #include "Pair.H"
 #include <algorithm>
+#include <cmath>
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -71,9 +72,25 @@ void Foam::fdm::findNearPairs
         neighbourBins.clear();
         for (label dk = -1; dk <= 1; ++dk)
         for (label dj = -1; dj <= 1; ++dj)
-        for (label di = -1; di <= 1; ++di)
         {
-            FixedList<label, 3> c({coords[p][0] + di, coords[p][1] + dj,
+            // Across the y faces of a Lees-Edwards cell the neighbour row
+            // is the image shifted by the offset: its particles near x sit
+            // near x - k s in the row, so the x stencil moves by that many
+            // bins and widens by one to cover the fraction.
+            const label row = coords[p][1] + dj;
+            const label k = (row < 0) ? -1 : (row >= nBins[1]) ? 1 : 0;
+            label iLow = -1;
+            label iHigh = 1;
+            if (k != 0 && box.shearOffset() != 0)
+            {
+                const scalar shift =
+                    -k*box.shearOffset()/box.span()[0]*nBins[0];
+                iLow = label(std::floor(shift)) - 1;
+                iHigh = iLow + 3;
+            }
+        for (label di = iLow; di <= iHigh; ++di)
+        {
+            FixedList<label, 3> c({coords[p][0] + di, row,
                                    coords[p][2] + dk});
             bool valid = true;
             for (direction d = 0; d < 3; ++d)
@@ -82,7 +99,7 @@ void Foam::fdm::findNearPairs
                 {
                     if (box.periodic(d))
                     {
-                        c[d] = (c[d] + nBins[d]) % nBins[d];
+                        c[d] = ((c[d] % nBins[d]) + nBins[d]) % nBins[d];
                     }
                     else
                     {
@@ -94,6 +111,7 @@ void Foam::fdm::findNearPairs
             {
                 neighbourBins.append(binIndex(c[0], c[1], c[2]));
             }
+        }
         }
         std::sort(neighbourBins.begin(), neighbourBins.end());
         const auto last =

@@ -17,7 +17,8 @@ Foam::fdm::periodicBox::periodicBox
 :
     min_(minCorner),
     span_(maxCorner - minCorner),
-    periodic_(periodic)
+    periodic_(periodic),
+    shearOffset_(0)
 {
     for (direction d = 0; d < 3; ++d)
     {
@@ -32,9 +33,31 @@ Foam::fdm::periodicBox::periodicBox
 }
 
 
+void Foam::fdm::periodicBox::setShearOffset(const scalar s)
+{
+    if (!periodic_[0] || !periodic_[1])
+    {
+        FatalErrorInFunction
+            << "Lees-Edwards images need a box periodic in x and y"
+            << abort(FatalError);
+    }
+    shearOffset_ = s - span_[0]*std::floor(s/span_[0]);
+}
+
+
+Foam::label Foam::fdm::periodicBox::periodsAlongY(const point& p) const
+{
+    return periodic_[1] ? label(std::floor((p[1] - min_[1])/span_[1])) : 0;
+}
+
+
 Foam::point Foam::fdm::periodicBox::wrap(const point& p) const
 {
     point w(p);
+
+    // Crossing the y faces of a sheared cell also shifts x (Lees-Edwards)
+    w[0] -= shearOffset_*periodsAlongY(p);
+
     for (direction d = 0; d < 3; ++d)
     {
         if (periodic_[d])
@@ -57,6 +80,12 @@ Foam::point Foam::fdm::periodicBox::wrap(const point& p) const
 Foam::vector Foam::fdm::periodicBox::minimumImage(const vector& d) const
 {
     vector m(d);
+    if (periodic_[1])
+    {
+        const scalar k = std::round(m[1]/span_[1]);
+        m[0] -= k*shearOffset_;
+        m[1] -= k*span_[1];
+    }
     for (direction i = 0; i < 3; ++i)
     {
         if (periodic_[i])

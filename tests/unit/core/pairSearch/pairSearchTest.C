@@ -77,3 +77,18 @@ TEST(pairSearch, matchesBruteForceWhenTheBoxHoldsFewerThanThreeBins)
         FixedList<bool, 3>({true, true, true}));
     compareWithBruteForce(box, 40, 2);
 }
+
+
+TEST(pairSearch, matchesBruteForceAcrossLeesEdwardsFaces)
+{
+    // Sheared periodic cell: the rows across the y faces are shifted images;
+    // offsets of whole, fractional and nearly whole bins, and both signs of
+    // the crossing, must all find every pair the minimum image finds
+    for (const scalar offset : {0.0, 1.3, 4.9, 7.2, 11.95, 19.0})
+    {
+        fdm::periodicBox box(point(0, 0, 0), point(20, 15, 12),
+            FixedList<bool, 3>({true, true, true}));
+        box.setShearOffset(offset);
+        compareWithBruteForce(box, 400, 3);
+    }
+}

@@ -101,3 +101,45 @@ TEST(periodicBox, rejectsDegenerateBox)
     );
     FatalError.dontThrowExceptions();
 }
+
+
+TEST(periodicBox, leesEdwardsImagesShiftAlongX)
+{
+    fdm::periodicBox box(point(0, 0, 0), point(10, 8, 6),
+        FixedList<bool, 3>({true, true, true}));
+    box.setShearOffset(23.0);          // stored modulo L_x
+    EXPECT_NEAR(box.shearOffset(), 3.0, 1e-12);
+
+    // One period up in y: the image is shifted by +3 in x, so wrapping
+    // takes 3 off x (and the periodic x wrap follows)
+    const point w = box.wrap(point(1, 9, 2));
+    EXPECT_NEAR(w.x(), 8.0, 1e-12);
+    EXPECT_NEAR(w.y(), 1.0, 1e-12);
+    EXPECT_EQ(box.periodsAlongY(point(1, 9, 2)), 1);
+    EXPECT_EQ(box.periodsAlongY(point(1, -0.5, 2)), -1);
+
+    // A particle near the top sees the image of one near the bottom
+    // displaced by (offset, L_y, 0): the separation is short
+    const point top(5, 7.5, 1);
+    const point bottom(2.2, 0.4, 1);
+    const vector d = box.minimumImage(bottom - top);
+    EXPECT_NEAR(d.x(), 0.2, 1e-12);
+    EXPECT_NEAR(d.y(), 0.9, 1e-12);
+    EXPECT_NEAR(d.z(), 0.0, 1e-12);
+
+    // Wrapped positions give the same separations as unwrapped ones
+    const point p(3.3, 17.1, 2.0);
+    const point q(4.1, 1.2, 5.5);
+    const vector d1 = box.minimumImage(q - p);
+    const vector d2 = box.minimumImage(box.wrap(q) - box.wrap(p));
+    EXPECT_NEAR(mag(d1 - d2), 0.0, 1e-12);
+}
+
+
+TEST(periodicBox, leesEdwardsNeedsXAndYPeriodic)
+{
+    fdm::periodicBox box(point(0, 0, 0), point(1, 1, 1),
+        FixedList<bool, 3>({true, false, true}));
+    FatalError.throwExceptions();
+    EXPECT_ANY_THROW(box.setShearOffset(0.5));
+}

@@ -1,0 +1,262 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "lubricatedContact.H"
+#include "readBounded.H"
+#include "mathematicalConstants.H"
+
+#include <cmath>
+
+using Foam::constant::mathematical::pi;
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::fdm::lubricatedContact::gapUpdate
+(
+    const scalar logOld,
+    const scalar un,
+    const scalar alphaEps,
+    const scalar alpha,
+    const scalar dtStar,
+    scalar& dGapdUn
+)
+{
+    // Positive root of A x^2 - B x - C = 0 (eq 17), C > 0: the product of
+    // the roots is -C/A < 0, so exactly one is positive.  For B < 0 the
+    // usual form subtracts nearly equal numbers when u and u_n are tiny
+    // (spec A.7); the conjugate form 2C/(sqrt(B^2 + 4AC) - B) does not, and
+    // taken in logs it stays exact when C underflows (a smooth pair pressed
+    // for long closes as exp(-t), below the smallest double).
+    const scalar A = 1 + alpha;
+    const scalar B = un + alphaEps - 1/dtStar;
+    const scalar C = std::exp(logOld)/dtStar;
+    const scalar root = std::sqrt(B*B + 4*A*C);
+    const scalar logX =
+        (B >= 0)
+      ? std::log((B + root)/(2*A))
+      : std::log(2.0) + logOld - std::log(dtStar) - std::log(root - B);
+
+    // Implicit differentiation of the quadratic: (2 A x - B) dx = x dB
+    const scalar x = std::exp(logX);
+    dGapdUn = x/(2*A*x - B);
+    return logX;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdm::lubricatedContact::lubricatedContact(const dictionary& dict)
+:
+    lubricatedContact
+    (
+        readBounded(dict, "viscosity", VSMALL, GREAT, "fluid viscosity eta_f"),
+        readBounded
+        (
+            dict, "stiffness", VSMALL, GREAT,
+            "bulk stiffness g [force/length]; rigid limit g/(eta gammaDot a)"
+            " >~ 1e5"
+        ),
+        readBoundedOrDefault
+        (
+            dict, "stiffnessRatio", 1, VSMALL, GREAT,
+            "asperity/bulk stiffness k_n/g; thesis 1"
+        ),
+        readBoundedOrDefault
+        (
+            dict, "tangentialStiffness", 0.5, VSMALL, GREAT,
+            "k_t/g; not given by the thesis (F.2-12), default 0.5"
+        ),
+        readBounded
+        (
+            dict, "roughness", 0, 0.5,
+            "asperity height eps = h/a; 0 for smooth spheres, thesis 1e-3"
+        ),
+        readBounded(dict, "friction", 0, GREAT, "Coulomb coefficient mu_m"),
+        readBoundedOrDefault
+        (
+            dict, "cutoff", 2, VSMALL, GREAT,
+            "interaction while the gap is below cutoff*a; thesis 2 (4 for"
+            " the two-sphere test)"
+        )
+    )
+{}
+
+
+Foam::fdm::lubricatedContact::lubricatedContact
+(
+    const scalar viscosity,
+    const scalar stiffness,
+    const scalar stiffnessRatio,
+    const scalar tangentialStiffness,
+    const scalar roughness,
+    const scalar friction,
+    const scalar cutoff
+)
+:
+    viscosity_(viscosity),
+    g_(stiffness),
+    stiffnessRatio_(stiffnessRatio),
+    kt_(tangentialStiffness*stiffness),
+    roughness_(roughness),
+    friction_(friction),
+    cutoff_(cutoff)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::fdm::lubricatedPairState Foam::fdm::lubricatedContact::start
+(
+    const scalar centreGap,
+    const scalar meanRadius
+) const
+{
+    const scalar u = max(centreGap/meanRadius, 1e-12);
+    return {std::log(u), u < roughness_, Zero};
+}
+
+
+Foam::scalar Foam::fdm::lubricatedContact::shearLubricationCoefficient
+(
+    const scalar logGap,
+    const scalar meanRadius
+) const
+{
+    // ln((2a + u)/u) from ln(u/a): finite however small u is
+    const scalar u = std::exp(logGap);
+    return
+        0.5*pi*viscosity_*meanRadius
+       *(-2 + (2 + u)*(std::log(2 + u) - logGap));
+}
+
+
+Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
+(
+    const lubricatedPairMotion& m,
+    const scalar dt,
+    lubricatedPairState& state
+) const
+{
+    const vector& n = m.normal;
+    const scalar a = m.meanRadius;
+    const scalar eps = roughness_;
+    const scalar un = m.centreGap/a;
+    const scalar kRatio = stiffnessRatio_;
+
+    lubricatedPairLoads loads;
+
+    // Normal: implicit gap update (A.5-A.7), split at a contact change
+    {
+        scalar logU = state.logGap;
+        bool contact = state.contact;
+        scalar remaining = dt*g_/(1.5*pi*viscosity_*a);
+        scalar dGapdUn = 0;
+
+        for (label pass = 0; pass < 3; ++pass)
+        {
+            const scalar alpha = contact ? kRatio : 0;
+            const scalar logX =
+                gapUpdate(logU, un, alpha*eps, alpha, remaining, dGapdUn);
+            const bool contactNew = std::exp(logX) < eps;
+            if (contactNew == contact || pass == 2)
+            {
+                logU = logX;
+                break;
+            }
+
+            // Eq 20 (sign of F.2-2): the time at which u reaches eps
+            const scalar tc = (std::exp(logU) - eps)/(eps*(eps - un));
+            if (!(tc > 0 && tc < remaining))
+            {
+                // Rounding at the threshold: redo the step in the new state
+                contact = contactNew;
+                continue;
+            }
+            logU = std::log(eps);
+            remaining -= tc;
+            contact = contactNew;
+        }
+
+        const scalar u = std::exp(logU);
+        state.logGap = logU;
+        state.contact = u < eps;
+
+        const scalar kn = kRatio*g_;
+        loads.normalContact = -kn*a*max(scalar(0), eps - u);
+        loads.normalLubrication = g_*a*(un - u) - loads.normalContact;
+        loads.normalStiffness = g_*(1 - dGapdUn);
+    }
+
+    const scalar u = std::exp(state.logGap);
+
+    // Tangential: turn the stored force with the pair (A.8)
+    vector Fs = state.shearForce;
+    const scalar magFs = mag(Fs);
+    if (magFs > 0)
+    {
+        Fs -= (Fs & n)*n;
+        const scalar magT = mag(Fs);
+        Fs = (magT > VSMALL*magFs) ? Fs*(magFs/magT) : vector(Zero);
+
+        const scalar angle = (m.meanSpin & n)*dt;
+        Fs = std::cos(angle)*Fs + std::sin(angle)*(n ^ Fs);
+    }
+
+    const vector slip = (m.contactVelocity - (m.contactVelocity & n)*n)*dt;
+    const scalar nut = shearLubricationCoefficient(state.logGap, a);
+    const scalar ktDt = kt_*dt;
+    const vector trial = Fs + kt_*slip;        // eq 29 (force on 1)
+
+    loads.shearContact = Zero;
+    if (!state.contact)
+    {
+        // Maxwell element (eq 27)
+        Fs = nut/(nut + ktDt)*trial;
+        loads.shearLubrication = Fs;
+        loads.shearStiffness = kt_*nut/(nut + ktDt);
+    }
+    else
+    {
+        const scalar cap = friction_*mag(loads.normalContact);
+        const scalar magTrial = mag(trial);
+        if (magTrial <= cap)
+        {
+            // Sticking: no tangential lubrication (eq 28-29)
+            Fs = trial;
+            loads.shearContact = Fs;
+            loads.shearLubrication = Zero;
+            loads.shearStiffness = kt_;
+        }
+        else
+        {
+            // Slipping (eq 33): Coulomb part along the trial force,
+            // lubrication on the plastic slip for the rest
+            Fs = trial*(nut + ktDt*cap/magTrial)/(nut + ktDt);
+            loads.shearContact = cap/magTrial*trial;
+            loads.shearLubrication = Fs - loads.shearContact;
+            loads.shearStiffness = kt_*nut/(nut + ktDt);
+        }
+    }
+    state.shearForce = Fs;
+
+    // Rolling and twisting resistance while u <= a (A.3)
+    if (u <= 1)
+    {
+        const scalar logInv = -state.logGap;
+        loads.rollingDamping =
+            pi*viscosity_*a*a*a*(1.5 + 0.126*u)*logInv;
+        loads.twistingDamping = pi*viscosity_*a*a*a*u*logInv;
+    }
+    else
+    {
+        loads.rollingDamping = 0;
+        loads.twistingDamping = 0;
+    }
+
+    return loads;
+}
+
+
+// ************************************************************************* //

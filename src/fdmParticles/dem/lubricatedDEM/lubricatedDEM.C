@@ -1,0 +1,435 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "lubricatedDEM.H"
+#include "pairSearch.H"
+#include "mathematicalConstants.H"
+#include "tensor.H"
+#include "Ostream.H"
+#include "dictionary.H"
+
+using Foam::constant::mathematical::pi;
+
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+const char* Foam::fdm::lubricatedDEM::stressPartName(const label part)
+{
+    static const char* names[nStressParts] =
+        {"normalContact", "shearContact", "normalLubrication",
+         "shearLubrication"};
+    return names[part];
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::scalar Foam::fdm::lubricatedDEM::reach() const
+{
+    return model_.cutoff()*max(radius_);
+}
+
+
+bool Foam::fdm::lubricatedDEM::searchDue() const
+{
+    if (timeSinceSearch_ >= GREAT)
+    {
+        return true;
+    }
+
+    // A pair not listed can close in by the fluctuation displacements of
+    // both particles plus the affine shear across at most the reach
+    scalar maxDisp = 0;
+    forAll(displacementSinceSearch_, i)
+    {
+        maxDisp = max(maxDisp, magSqr(displacementSinceSearch_[i]));
+    }
+    const scalar lMax = 2*max(radius_) + reach() + skin_;
+    return
+        2*std::sqrt(maxDisp) + mag(shearRate_)*lMax*timeSinceSearch_
+     >= skin_;
+}
+
+
+void Foam::fdm::lubricatedDEM::searchPairs()
+{
+    const scalar listReach = 2*max(radius_) + reach() + skin_;
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (2*listReach >= box_.span()[d])
+        {
+            FatalErrorInFunction
+                << "The cell is too small for the interaction range: edge "
+                << box_.span()[d] << " along direction " << label(d)
+                << " must exceed twice 2 a_max + cutoff a_max + skin = "
+                << 2*listReach << " (the minimum image would miss pairs)."
+                << nl << "    Enlarge the box or lower the cutoff"
+                << abort(FatalError);
+        }
+    }
+
+    DynamicList<labelPair> pairs;
+    findNearPairs(box_, position_, radius_, reach() + skin_, pairs);
+
+    // Carry the history of pairs listed before (both lists sorted)
+    DynamicList<lubricatedPairState> states(pairs.size());
+    boolList active(pairs.size(), false);
+    states.setSize(pairs.size());
+    label old = 0;
+    forAll(pairs, k)
+    {
+        const labelPair& p = pairs[k];
+        while
+        (
+            old < pairs_.size()
+         && (
+                pairs_[old].first() < p.first()
+             || (
+                    pairs_[old].first() == p.first()
+                 && pairs_[old].second() < p.second()
+                )
+            )
+        )
+        {
+            ++old;
+        }
+        if (old < pairs_.size() && pairs_[old] == p)
+        {
+            states[k] = states_[old];
+            active[k] = active_[old];
+        }
+    }
+
+    pairs_.transfer(pairs);
+    states_.transfer(states);
+    active_.transfer(active);
+    displacementSinceSearch_ = Zero;
+    timeSinceSearch_ = 0;
+    ++nSearches_;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdm::lubricatedDEM::lubricatedDEM
+(
+    const periodicBox& box,
+    const scalar shearRate,
+    const lubricatedContact& model
+)
+:
+    box_(box),
+    shearRate_(shearRate),
+    model_(model),
+    dragViscosity_(0),
+    skin_(-1),
+    timeSinceSearch_(GREAT),
+    nSearches_(0),
+    stresslet_(nStressParts),
+    nInteractions_(0),
+    nContacts_(0),
+    stabilityNumber_(0),
+    time_(0)
+{
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!box_.periodic(d))
+        {
+            FatalErrorInFunction
+                << "The lubricated DEM cell must be periodic in x, y and z"
+                << abort(FatalError);
+        }
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::fdm::lubricatedDEM::addParticle
+(
+    const point& x,
+    const scalar radius,
+    const scalar density,
+    const bool mobile
+)
+{
+    const label i = size();
+    const scalar m = density*4.0/3.0*pi*pow3(radius);
+    position_.append(box_.wrap(x));
+    velocity_.append(Zero);
+    spin_.append(Zero);
+    radius_.append(radius);
+    mass_.append(m);
+    inertia_.append(0.4*m*sqr(radius));
+    bodyForce_.append(Zero);
+    mobile_.append(mobile);
+    displacementSinceSearch_.append(Zero);
+    force_.append(Zero);
+    torque_.append(Zero);
+    for (List<symmTensor>& s : stresslet_)
+    {
+        s.append(Zero);
+    }
+    timeSinceSearch_ = GREAT;
+    return i;
+}
+
+
+void Foam::fdm::lubricatedDEM::setTime(const scalar t)
+{
+    time_ = t;
+    box_.setShearOffset(shearRate_*box_.span()[1]*time_);
+}
+
+
+void Foam::fdm::lubricatedDEM::step(const scalar dt)
+{
+    const label n = size();
+    if (skin_ < 0)
+    {
+        skin_ = 0.3*max(radius_);
+    }
+    setTime(time_);
+    if (searchDue())
+    {
+        searchPairs();
+    }
+
+    force_ = bodyForce_;
+    torque_ = Zero;
+    for (List<symmTensor>& s : stresslet_)
+    {
+        s = Zero;
+    }
+    List<symmTensor> damping(n, Zero);
+    scalarList stiffness(n, Zero);
+    scalarList spinStiffness(n, Zero);
+    nInteractions_ = 0;
+    nContacts_ = 0;
+
+    forAll(pairs_, k)
+    {
+        const label i = pairs_[k].first();
+        const label j = pairs_[k].second();
+        const vector l = box_.minimumImage(position_[j] - position_[i]);
+        const scalar dist = mag(l);
+        const scalar a = 0.5*(radius_[i] + radius_[j]);
+        const scalar un = dist - radius_[i] - radius_[j];
+
+        if (!model_.interacts(un, a))
+        {
+            active_[k] = false;
+            continue;
+        }
+        if (!active_[k])
+        {
+            states_[k] = model_.start(un, a);
+            active_[k] = true;
+        }
+
+        const vector nij = l/dist;
+        const scalar armI = radius_[i] + 0.5*un;
+        const scalar armJ = radius_[j] + 0.5*un;
+
+        // Relative velocity of the surfaces at mid-gap, the affine shear
+        // across the branch vector included (frame-invariant: zero for a
+        // pair in rigid-body motion)
+        vector dv = velocity_[j] - velocity_[i];
+        dv.x() += shearRate_*l.y();
+        const vector contactVelocity =
+            dv - armJ*(spin_[j] ^ nij) - armI*(spin_[i] ^ nij);
+        const vector w = spin_[j] - spin_[i];
+
+        const lubricatedPairLoads loads = model_.step
+        (
+            {nij, un, a, contactVelocity, w, 0.5*(spin_[i] + spin_[j])},
+            dt,
+            states_[k]
+        );
+
+        const vector F = loads.force(nij);
+        const vector Fs = loads.shearContact + loads.shearLubrication;
+        const vector wn = (w & nij)*nij;
+        const vector Tv =
+            loads.rollingDamping*(w - wn) + loads.twistingDamping*wn;
+
+        force_[i] += F;
+        force_[j] -= F;
+        torque_[i] += armI*(nij ^ Fs) + Tv;
+        torque_[j] += armJ*(nij ^ Fs) - Tv;
+
+        const symmTensor nn = sqr(nij);
+        const symmTensor D =
+            loads.rollingDamping*(symmTensor::I - nn)
+          + loads.twistingDamping*nn;
+        damping[i] += D;
+        damping[j] += D;
+
+        const scalar kSum = loads.normalStiffness + loads.shearStiffness;
+        stiffness[i] += kSum;
+        stiffness[j] += kSum;
+        spinStiffness[i] += loads.shearStiffness*sqr(armI);
+        spinStiffness[j] += loads.shearStiffness*sqr(armJ);
+
+        const vector parts[nStressParts] =
+        {
+            loads.normalContact*nij,
+            loads.shearContact,
+            loads.normalLubrication*nij,
+            loads.shearLubrication
+        };
+        for (label p = 0; p < nStressParts; ++p)
+        {
+            const symmTensor S = symm(parts[p]*nij);
+            stresslet_[p][i] += armI*S;
+            stresslet_[p][j] += armJ*S;
+        }
+
+        ++nInteractions_;
+        if (states_[k].contact)
+        {
+            ++nContacts_;
+        }
+    }
+
+    // Leapfrog with point-implicit drag and viscous torques
+    stabilityNumber_ = 0;
+    const vector flowSpin(0, 0, -0.5*shearRate_);
+    for (label i = 0; i < n; ++i)
+    {
+        if (!mobile_[i])
+        {
+            continue;
+        }
+        const scalar m = mass_[i];
+        const scalar J = inertia_[i];
+        const scalar a = radius_[i];
+        const scalar cDrag = 6*pi*dragViscosity_*a;
+        const scalar cSpin = 8*pi*dragViscosity_*pow3(a);
+
+        vector& v = velocity_[i];
+        const vector F =
+            force_[i] - cDrag*v - m*shearRate_*v.y()*vector(1, 0, 0);
+        v += dt/(m + dt*cDrag)*F;
+
+        const vector T = torque_[i] - cSpin*(spin_[i] - flowSpin);
+        const tensor M = J*tensor::I + dt*(damping[i] + cSpin*symmTensor::I);
+        spin_[i] += inv(M) & (dt*T);
+
+        vector dx = dt*v;
+        dx.x() += dt*shearRate_*(position_[i].y() + 0.5*dt*v.y());
+        position_[i] += dx;
+        displacementSinceSearch_[i] += dt*v;
+
+        stabilityNumber_ = max
+        (
+            stabilityNumber_,
+            0.5*dt*std::sqrt(2*max(stiffness[i]/m, spinStiffness[i]/J))
+        );
+    }
+
+    timeSinceSearch_ += dt;
+    setTime(time_ + dt);
+    forAll(position_, i)
+    {
+        position_[i] = box_.wrap(position_[i]);
+    }
+}
+
+
+Foam::vector Foam::fdm::lubricatedDEM::labVelocity(const label i) const
+{
+    return velocity_[i] + vector(shearRate_*position_[i].y(), 0, 0);
+}
+
+
+Foam::symmTensor Foam::fdm::lubricatedDEM::stress(const label part) const
+{
+    const vector& L = box_.span();
+    return sum(stresslet_[part])/(L.x()*L.y()*L.z());
+}
+
+
+Foam::scalar Foam::fdm::lubricatedDEM::volumeFraction() const
+{
+    const vector& L = box_.span();
+    return 4.0/3.0*pi*sum(pow3(radius_))/(L.x()*L.y()*L.z());
+}
+
+
+Foam::scalar Foam::fdm::lubricatedDEM::criticalTimeStep() const
+{
+    const scalar k = max(model_.stiffness(), model_.tangentialStiffness());
+    scalar dt = GREAT;
+    forAll(mass_, i)
+    {
+        if (mobile_[i])
+        {
+            dt = min(dt, std::sqrt(mass_[i]/k));
+            dt = min(dt, std::sqrt(inertia_[i]/(model_.tangentialStiffness()*sqr(radius_[i]))));
+        }
+    }
+    return dt;
+}
+
+
+void Foam::fdm::lubricatedDEM::writeState(Ostream& os) const
+{
+    os.writeEntry("time", time_);
+    os.writeEntry("nParticles", size());
+    os.writeEntry("position", position_);
+    os.writeEntry("velocity", velocity_);
+    os.writeEntry("angularVelocity", spin_);
+    os.writeEntry("radius", radius_);
+
+    scalarList logGap(pairs_.size());
+    boolList contact(pairs_.size());
+    List<vector> shearForce(pairs_.size());
+    forAll(pairs_, k)
+    {
+        logGap[k] = states_[k].logGap;
+        contact[k] = states_[k].contact;
+        shearForce[k] = states_[k].shearForce;
+    }
+    os.writeEntry("pairs", List<labelPair>(pairs_));
+    os.writeEntry("pairActive", active_);
+    os.writeEntry("pairLogGap", logGap);
+    os.writeEntry("pairContact", contact);
+    os.writeEntry("pairShearForce", shearForce);
+    os.writeEntry("timeSinceSearch", timeSinceSearch_);
+    os.writeEntry("displacementSinceSearch", displacementSinceSearch_);
+}
+
+
+void Foam::fdm::lubricatedDEM::readState(const dictionary& dict)
+{
+    const label n = dict.get<label>("nParticles");
+    if (n != size())
+    {
+        FatalIOErrorInFunction(dict)
+            << dict.name() << " holds " << n << " particles but the case"
+            << " lists " << size() << exit(FatalIOError);
+    }
+    position_ = dict.get<List<point>>("position");
+    velocity_ = dict.get<List<vector>>("velocity");
+    spin_ = dict.get<List<vector>>("angularVelocity");
+
+    pairs_ = dict.get<List<labelPair>>("pairs");
+    active_ = dict.get<boolList>("pairActive");
+    const scalarList logGap(dict.get<scalarList>("pairLogGap"));
+    const boolList contact(dict.get<boolList>("pairContact"));
+    const List<vector> shearForce(dict.get<List<vector>>("pairShearForce"));
+    states_.setSize(pairs_.size());
+    forAll(pairs_, k)
+    {
+        states_[k] = {logGap[k], bool(contact[k]), shearForce[k]};
+    }
+    timeSinceSearch_ = dict.get<scalar>("timeSinceSearch");
+    displacementSinceSearch_ =
+        dict.get<List<vector>>("displacementSinceSearch");
+    setTime(dict.get<scalar>("time"));
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,306 @@
+// Unit tests for Foam::fdm::lubricatedDEM: the two-particle tests of
+// thesis 2 (spec B.1), conservation, frame invariance, Lees-Edwards images,
+// restart and stability
+
+#include "lubricatedDEM.H"
+#include "mathematicalConstants.H"
+#include "OStringStream.H"
+#include "IStringStream.H"
+
+#include <gtest/gtest.h>
+#include <cmath>
+#include <random>
+
+using namespace Foam;
+using Foam::constant::mathematical::pi;
+
+namespace
+{
+
+fdm::periodicBox cube(const scalar L)
+{
+    return fdm::periodicBox(point::zero, point(L, L, L),
+        FixedList<bool, 3>({true, true, true}));
+}
+
+// Sphere of radius a = 1, density rho, settling under its weight onto a
+// fixed sphere from an initial gap u0 (spec B.1): returns the gap history
+struct settling
+{
+    fdm::lubricatedDEM dem;
+    scalar weight;
+
+    settling(const scalar eps, const scalar g, const scalar rho,
+        const scalar gravity, const scalar u0)
+    :
+        dem(cube(40), 0, fdm::lubricatedContact(1, g, 1, 0.5, eps, 0.4, 4))
+    {
+        dem.addParticle(point(20, 20, 20), 1, rho, false);
+        dem.addParticle(point(20, 22 + u0, 20), 1, rho);
+        weight = rho*4.0/3.0*pi*gravity;
+        dem.bodyForce(1) = vector(0, -weight, 0);
+    }
+
+    //- Centre gap u_n
+    scalar centreGap() const
+    {
+        return mag(dem.positions()[1] - dem.positions()[0]) - 2;
+    }
+
+    //- True gap u = u_n - u_e, u_e = F_n/g the deflection of the bulk
+    //  spring under the normal force on the fixed sphere (traction > 0)
+    scalar gap() const
+    {
+        const vector n = dem.positions()[1] - dem.positions()[0];
+        const scalar Fn = dem.forces()[0] & (n/mag(n));
+        return centreGap() - Fn/dem.model().stiffness();
+    }
+};
+
+} // namespace
+
+
+TEST(lubricatedDEM, settlingSphereGapDecaysAsTheViscousExponential)
+{
+    // Overdamped (inertial time m u/(3/2 pi eta a^2) <= 1e-3 tau_c below
+    // u = 0.01), smooth: u = u0 exp(-(8/9) t/tau_c), tau_c = eta/(a rho g)
+    // (eq 36), followed from u = 1e-2 a down to 1e-7 a without u <= 0
+    const scalar rho = 0.01;
+    const scalar grav = 1000;
+    settling s(0, 1e4, rho, grav, 0.5);
+    const scalar tauC = 1/(rho*grav);
+    const scalar dt = 0.2*s.dem.criticalTimeStep();
+
+    s.dem.step(dt);
+    while (s.gap() > 1e-2)
+    {
+        s.dem.step(dt);
+    }
+    const scalar t0 = s.dem.time();
+    const scalar u0 = s.gap();
+    while (s.gap() > 1e-7)
+    {
+        s.dem.step(dt);
+        ASSERT_GT(s.gap(), 0);
+    }
+    const scalar rate =
+        -std::log(s.gap()/u0)/(s.dem.time() - t0)*tauC;
+    EXPECT_NEAR(rate, 8.0/9.0, 0.01*8.0/9.0);
+}
+
+
+TEST(lubricatedDEM, roughSphereRestsAtTheAsperityEquilibrium)
+{
+    // Contact number K = k_n eps a/(m g) > 1: the gap settles at
+    // u_eq = eps a - m g/k_n (eq 37)
+    const scalar eps = 1e-2;
+    const scalar g = 1e4;
+    const scalar rho = 0.01;
+    const scalar grav = 1000;
+    settling s(eps, g, rho, grav, 0.05);
+    const scalar dt = 0.2*s.dem.criticalTimeStep();
+    while (s.dem.time() < 30/(rho*grav))
+    {
+        s.dem.step(dt);
+    }
+    const scalar ueq = eps - s.weight/g;
+    ASSERT_GT(ueq, 0.3*eps);
+    EXPECT_NEAR(s.gap(), ueq, 1e-6*eps);
+    // The centre gap is u + u_e with u_e = -mg/g under the weight
+    EXPECT_NEAR(s.centreGap(), ueq - s.weight/g, 1e-6*eps);
+    EXPECT_EQ(s.dem.nContacts(), 1);
+}
+
+
+namespace
+{
+
+// A random dilute cloud with random velocities and spins
+fdm::lubricatedDEM randomCloud(const scalar shearRate, const label n,
+    const unsigned seed)
+{
+    fdm::lubricatedDEM dem(cube(14), shearRate,
+        fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-2, 0.4, 2));
+    std::mt19937 gen(seed);
+    std::uniform_real_distribution<scalar> u01(0, 1);
+    DynamicList<point> placed;
+    while (placed.size() < n)
+    {
+        const point x(14*u01(gen), 14*u01(gen), 14*u01(gen));
+        bool free = true;
+        for (const point& y : placed)
+        {
+            free = free && mag(dem.box().minimumImage(y - x)) > 2.9;
+        }
+        if (free)
+        {
+            placed.append(x);
+            const label i =
+                dem.addParticle(x, u01(gen) < 0.5 ? 1 : 1.4, 1e-2);
+            dem.velocities()[i] = vector(u01(gen), u01(gen), u01(gen)) - 0.5*vector::one;
+            dem.spins()[i] = vector(u01(gen), u01(gen), u01(gen)) - 0.5*vector::one;
+        }
+    }
+    return dem;
+}
+
+} // namespace
+
+
+TEST(lubricatedDEM, forcesAndMomentsBalance)
+{
+    // Pairwise loads: no net force, and no net moment about the origin
+    // once the branch vectors are counted (sum T_i + l x F per pair)
+    fdm::lubricatedDEM dem = randomCloud(0.7, 25, 2);
+    for (label i = 0; i < 20; ++i)
+    {
+        dem.step(1e-3);
+    }
+    ASSERT_GT(dem.nInteractions(), 10);
+    scalar scale = 0;
+    vector total(Zero);
+    for (const vector& f : dem.forces())
+    {
+        scale = max(scale, mag(f));
+        total += f;
+    }
+    EXPECT_LT(mag(total)/scale, 1e-12);
+
+    // One pair: the torques balance the moment of the pair forces,
+    // T_1 + T_2 = l x F_1
+    fdm::lubricatedDEM pair(cube(14), 0,
+        fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-2, 0.4, 2));
+    pair.addParticle(point(5, 5, 5), 1, 1e-2);
+    pair.addParticle(point(6.5, 6.2, 5.4), 1.4, 1e-2);
+    pair.velocities()[0] = vector(0.3, -0.2, 0.1);
+    pair.spins()[1] = vector(0.5, 0.1, -0.4);
+    for (label i = 0; i < 4; ++i)
+    {
+        pair.step(1e-3);
+    }
+    // The loads of a step act at the positions it starts from
+    const vector l =
+        pair.box().minimumImage(pair.positions()[1] - pair.positions()[0]);
+    pair.step(1e-3);
+    const vector moment =
+        pair.torques()[0] + pair.torques()[1] - (l ^ pair.forces()[0]);
+    EXPECT_LT(mag(moment), 1e-12*mag(pair.forces()[0])*mag(l));
+}
+
+
+TEST(lubricatedDEM, rigidBodyMotionGivesNoShearForce)
+{
+    // Two spheres spinning and orbiting together (gammaDot = 0): the
+    // contact-point velocity vanishes, so no tangential force and torque
+    fdm::lubricatedDEM dem(cube(12), 0,
+        fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-2, 0.4, 2));
+    const point c(6, 6, 6);
+    const vector Omega(0.3, -0.7, 0.5);
+    const point x0(5, 5.6, 6.3);
+    const point x1 = x0 + 2.05*vector(0.6, 0.64, 0.48);
+    dem.addParticle(x0, 1, 1e-2);
+    dem.addParticle(x1, 1, 1e-2);
+    dem.velocities()[0] = Omega ^ (x0 - c);
+    dem.velocities()[1] = Omega ^ (x1 - c);
+    dem.spins()[0] = Omega;
+    dem.spins()[1] = Omega;
+    dem.step(1e-6);
+    ASSERT_EQ(dem.nInteractions(), 1);
+    // normal force only: torques vanish, force along the branch vector
+    EXPECT_LT(mag(dem.torques()[0]), 1e-12*mag(dem.forces()[0]) + 1e-15);
+    const vector n = (x1 - x0)/mag(x1 - x0);
+    const vector f = dem.forces()[0];
+    EXPECT_LT(mag(f - (f & n)*n), 1e-9*mag(f) + 1e-15);
+}
+
+
+TEST(lubricatedDEM, leesEdwardsImagesGiveTheInteriorForce)
+{
+    // The same pair, once inside the cell and once straddling the sheared
+    // y faces: identical loads (the cell is invariant under the shift)
+    auto run = [](const scalar yShift)
+    {
+        fdm::lubricatedDEM dem(cube(12), 1.3,
+            fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-2, 0.4, 2));
+        dem.setTime(0.77);
+        const scalar offset = dem.box().shearOffset();
+        point a(4, 5 + yShift, 3);
+        point b(5.2, 6.6 + yShift, 3.5);
+        // Moving b up by yShift inside a sheared cell moves its image by
+        // the affine shift; place it where the sheared copy lies
+        if (b.y() >= 12)
+        {
+            b = point(b.x() - offset, b.y() - 12, b.z());
+        }
+        dem.addParticle(a, 1, 1e-2);
+        dem.addParticle(b, 1.1, 1e-2);
+        dem.velocities()[0] = vector(0.1, 0.2, -0.3);
+        dem.velocities()[1] = vector(-0.2, 0.05, 0.1);
+        dem.spins()[1] = vector(0, 0, 0.4);
+        dem.step(1e-4);
+        return dem.forces()[0];
+    };
+    const vector inside = run(0);
+    const vector across = run(6);
+    ASSERT_GT(mag(inside), 0);
+    EXPECT_LT(mag(inside - across), 1e-9*mag(inside));
+}
+
+
+TEST(lubricatedDEM, restartFromTheWrittenStateIsBitwise)
+{
+    fdm::lubricatedDEM straight = randomCloud(1, 40, 5);
+    fdm::lubricatedDEM first = randomCloud(1, 40, 5);
+    for (label i = 0; i < 300; ++i)
+    {
+        straight.step(2e-3);
+    }
+    for (label i = 0; i < 150; ++i)
+    {
+        first.step(2e-3);
+    }
+    OStringStream os;
+    os.precision(17);
+    first.writeState(os);
+    IStringStream is(os.str());
+    const dictionary state(is);
+
+    fdm::lubricatedDEM restarted = randomCloud(1, 40, 5);
+    restarted.readState(state);
+    for (label i = 0; i < 150; ++i)
+    {
+        restarted.step(2e-3);
+    }
+    ASSERT_GT(straight.nInteractions(), 0);
+    forAll(straight.positions(), i)
+    {
+        EXPECT_EQ(straight.positions()[i], restarted.positions()[i]) << i;
+        EXPECT_EQ(straight.spins()[i], restarted.spins()[i]) << i;
+    }
+}
+
+
+TEST(lubricatedDEM, stabilityNumberFlagsTooLargeSteps)
+{
+    // A pressed pair: s < 1 at a tenth of the critical step, and the
+    // thesis rule dt_cr = sqrt(m/g) is the scale where s reaches order 1
+    for (const scalar factor : {0.1, 3.0})
+    {
+        settling s(1e-2, 1e4, 0.01, 1000, 0.005);
+        const scalar dt = factor*s.dem.criticalTimeStep();
+        scalar sMax = 0;
+        for (label i = 0; i < 200; ++i)
+        {
+            s.dem.step(dt);
+            sMax = max(sMax, s.dem.stabilityNumber());
+        }
+        if (factor < 1)
+        {
+            EXPECT_LT(sMax, 1);
+        }
+        else
+        {
+            EXPECT_GT(sMax, 1);
+        }
+    }
+}
