@@ -10,6 +10,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
+#include "particleList.H"
 #include "IFstream.H"
 #include "OSspecific.H"
 
@@ -37,24 +38,6 @@ void requirePositive
     }
 }
 
-
-void expectPunctuation
-(
-    Istream& is,
-    const token::punctuationToken p,
-    const string& what
-)
-{
-    token t(is);
-    if (!(t.isPunctuation() && t.pToken() == p))
-    {
-        FatalIOErrorInFunction(is)
-            << "Expected '" << char(p) << "' " << what << " in "
-            << is.name() << " but found " << t.info() << nl
-            << "    each particle is a row (group (x y z) radius)"
-            << exit(FatalIOError);
-    }
-}
 
 } // namespace
 
@@ -142,83 +125,17 @@ Foam::label Foam::fdmParticleCloud::groupIndex
 
 void Foam::fdmParticleCloud::readParticles()
 {
-    const bool inline_ = dict_.found("particles");
-    const bool fromFile = dict_.found("particlesFile");
-    if (inline_ == fromFile)
-    {
-        FatalIOErrorInFunction(dict_)
-            << dict_.name() << " needs exactly one of the keywords"
-            << " 'particles' (inline list) and 'particlesFile' (file name"
-            << " relative to constant/)" << exit(FatalIOError);
-    }
+    fdm::particleList list =
+        fdm::readParticleList(dict_, mesh_.time().constant());
 
-    autoPtr<Istream> isPtr;
-    if (inline_)
+    group_.setSize(list.group.size());
+    forAll(list.group, i)
     {
-        isPtr.reset(new ITstream(dict_.lookup("particles")));
+        group_[i] = groupIndex(list.group[i], dict_);
+        list.position[i] = box_.wrap(list.position[i]);
     }
-    else
-    {
-        const fileName file =
-            mesh_.time().constant()/dict_.get<fileName>("particlesFile");
-        if (!isFile(file))
-        {
-            FatalIOErrorInFunction(dict_)
-                << "particlesFile " << file << " named in " << dict_.name()
-                << " does not exist" << exit(FatalIOError);
-        }
-        isPtr.reset(new IFstream(file));
-    }
-    Istream& is = isPtr();
-
-    DynamicList<label> group;
-    DynamicList<scalar> radius;
-    DynamicList<point> position;
-
-    token first(is);
-    if (first.isLabel())
-    {
-        // Optional count before the list, as OpenFOAM writes lists
-        first = token(is);
-    }
-    if (!(first.isPunctuation() && first.pToken() == token::BEGIN_LIST))
-    {
-        FatalIOErrorInFunction(is)
-            << "Expected a list of particles in " << is.name()
-            << " but found " << first.info() << nl
-            << "    each particle is a row (group (x y z) radius)"
-            << exit(FatalIOError);
-    }
-
-    while (true)
-    {
-        token t(is);
-        if (t.isPunctuation() && t.pToken() == token::END_LIST)
-        {
-            break;
-        }
-        if (!t.good() || is.eof())
-        {
-            FatalIOErrorInFunction(is)
-                << "Unterminated particle list in " << is.name()
-                << exit(FatalIOError);
-        }
-        is.putBack(t);
-        expectPunctuation(is, token::BEGIN_LIST, "at the start of a row");
-        word g;
-        point x;
-        scalar a;
-        is >> g >> x >> a;
-        expectPunctuation(is, token::END_LIST, "at the end of a row");
-
-        group.append(groupIndex(g, dict_));
-        position.append(box_.wrap(x));
-        radius.append(a);
-    }
-
-    group_.transfer(group);
-    radius_.transfer(radius);
-    position_.transfer(position);
+    radius_.transfer(list.radius);
+    position_.transfer(list.position);
 }
 
 

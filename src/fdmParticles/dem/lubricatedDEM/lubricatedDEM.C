@@ -129,6 +129,7 @@ Foam::fdm::lubricatedDEM::lubricatedDEM
     stresslet_(nStressParts),
     nInteractions_(0),
     nContacts_(0),
+    nCrushed_(0),
     stabilityNumber_(0),
     time_(0)
 {
@@ -207,6 +208,8 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
     scalarList spinStiffness(n, Zero);
     nInteractions_ = 0;
     nContacts_ = 0;
+    nCrushed_ = 0;
+    const scalar logCrushed = std::log(0.01*model_.roughness());
 
     forAll(pairs_, k)
     {
@@ -290,6 +293,10 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
         if (states_[k].contact)
         {
             ++nContacts_;
+            if (states_[k].logGap < logCrushed)
+            {
+                ++nCrushed_;
+            }
         }
     }
 

@@ -1,0 +1,136 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+
+Application
+    lubricatedDEMFoam
+
+Description
+    Lubrication-only DEM (thesis 2): spheres in a tri-periodic Lees-Edwards
+    cell sheared at an imposed rate, interacting through the implicit
+    lubricated contact model only, with no fluid solve.  Same case
+    conventions as fdmSuspensionFoam: system/controlDict (deltaT, endTime,
+    writeInterval, function objects), constant/particleProperties, the
+    particle list of fdmPackParticles, <time>/particleState for restarts.
+
+    constant/particleProperties:
+    \verbatim
+    particlesFile   "particleList";
+    density         0.01;           // particle density rho_p
+    cell
+    {
+        min         (0 0 0);
+        max         (20 20 20);
+        shearRate   1;              // gammaDot along x, gradient along y
+    }
+    stokesDrag      off;            // drag against the affine flow (spec B.2)
+    lubricatedContact { ... }       // see lubricatedContact.H
+    output
+    {
+        interval    100;            // steps between time-series rows
+    }
+    \endverbatim
+
+    Writes postProcessing/lubricatedDEM/<startTime>/stress.dat: time,
+    strain, phi, interactions, contacts, stability number and the xx, yy,
+    zz, xy stresses of the four parts NC, SC, NL, SL (compression < 0).
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "Time.H"
+#include "IOdictionary.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "clockTime.H"
+#include "lubricatedDEM.H"
+#include "particleList.H"
+#include "readBounded.H"
+
+using namespace Foam;
+
+#include "demSetup.H"
+#include "demOutput.H"
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Lubrication-only DEM of a sheared suspension (thesis 2): no fluid"
+        " solve, pairwise lubricated contacts in a Lees-Edwards cell"
+    );
+    argList::noParallel();
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    IOdictionary properties
+    (
+        IOobject
+        (
+            "particleProperties",
+            runTime.constant(),
+            runTime,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE
+        )
+    );
+
+    fdm::lubricatedDEM dem = createDEM(properties, runTime);
+    const scalar dt = runTime.deltaTValue();
+    checkTimeStep(dem, dt, runTime);
+
+    const label outputInterval = max
+    (
+        label(1),
+        properties.subOrEmptyDict("output").getOrDefault<label>("interval", 100)
+    );
+    demSeries series(runTime, dem);
+
+    Info<< nl << "Starting time loop" << nl << endl;
+
+    clockTime clock;
+    const scalar startTime = runTime.value();
+    label stepCount = 0;
+    scalar sMax = 0;
+    scalar lastReport = -GREAT;
+
+    while (runTime.run())
+    {
+        ++runTime;
+        dem.step(dt);
+        ++stepCount;
+        sMax = max(sMax, dem.stabilityNumber());
+
+        checkHealth(dem, runTime);
+
+        if (stepCount % outputInterval == 0)
+        {
+            series.append(dem);
+        }
+        // A progress line every 10 s of wall time and at the end
+        const bool last =
+            runTime.value() > runTime.endTime().value() - 0.5*dt;
+        if (clock.elapsedTime() >= lastReport + 10 || last)
+        {
+            lastReport = clock.elapsedTime();
+            reportProgress(dem, runTime, clock, startTime, sMax);
+            sMax = 0;
+        }
+
+        if (runTime.writeTime())
+        {
+            writeState(dem, runTime);
+        }
+    }
+
+    Info<< nl << "End: " << stepCount << " steps, "
+        << clock.elapsedTime() << " s, "
+        << stepCount*dem.size()/max(clock.elapsedTime(), SMALL)
+        << " particle-steps/s" << nl << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,123 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "particleList.H"
+#include "IFstream.H"
+#include "ITstream.H"
+#include "OSspecific.H"
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+void expectPunctuation
+(
+    Istream& is,
+    const token::punctuationToken p,
+    const string& what
+)
+{
+    token t(is);
+    if (!(t.isPunctuation() && t.pToken() == p))
+    {
+        FatalIOErrorInFunction(is)
+            << "Expected '" << char(p) << "' " << what << " in "
+            << is.name() << " but found " << t.info() << nl
+            << "    each particle is a row (group (x y z) radius)"
+            << exit(FatalIOError);
+    }
+}
+
+} // namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+Foam::fdm::particleList Foam::fdm::readParticleList
+(
+    const dictionary& dict,
+    const fileName& constantDir
+)
+{
+    const bool inlineList = dict.found("particles");
+    const bool fromFile = dict.found("particlesFile");
+    if (inlineList == fromFile)
+    {
+        FatalIOErrorInFunction(dict)
+            << dict.name() << " needs exactly one of the keywords"
+            << " 'particles' (inline list) and 'particlesFile' (file name"
+            << " relative to constant/)" << exit(FatalIOError);
+    }
+
+    autoPtr<Istream> isPtr;
+    if (inlineList)
+    {
+        isPtr.reset(new ITstream(dict.lookup("particles")));
+    }
+    else
+    {
+        const fileName file =
+            constantDir/dict.get<fileName>("particlesFile");
+        if (!isFile(file))
+        {
+            FatalIOErrorInFunction(dict)
+                << "particlesFile " << file << " named in " << dict.name()
+                << " does not exist" << exit(FatalIOError);
+        }
+        isPtr.reset(new IFstream(file));
+    }
+    Istream& is = isPtr();
+
+    particleList list;
+
+    token first(is);
+    if (first.isLabel())
+    {
+        // Optional count before the list, as OpenFOAM writes lists
+        first = token(is);
+    }
+    if (!(first.isPunctuation() && first.pToken() == token::BEGIN_LIST))
+    {
+        FatalIOErrorInFunction(is)
+            << "Expected a list of particles in " << is.name()
+            << " but found " << first.info() << nl
+            << "    each particle is a row (group (x y z) radius)"
+            << exit(FatalIOError);
+    }
+
+    while (true)
+    {
+        token t(is);
+        if (t.isPunctuation() && t.pToken() == token::END_LIST)
+        {
+            break;
+        }
+        if (!t.good() || is.eof())
+        {
+            FatalIOErrorInFunction(is)
+                << "Unterminated particle list in " << is.name()
+                << exit(FatalIOError);
+        }
+        is.putBack(t);
+        expectPunctuation(is, token::BEGIN_LIST, "at the start of a row");
+        word g;
+        point x;
+        scalar a;
+        is >> g >> x >> a;
+        expectPunctuation(is, token::END_LIST, "at the end of a row");
+
+        list.group.append(g);
+        list.position.append(x);
+        list.radius.append(a);
+    }
+
+    return list;
+}
+
+
+// ************************************************************************* //

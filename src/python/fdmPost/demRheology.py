@@ -1,0 +1,90 @@
+"""Simple-shear rheology of lubricatedDEMFoam runs and the model of thesis 2
+(Chevremont 2020, article 2, eqs 13-16; spec seed2 C.3).
+
+The time series postProcessing/lubricatedDEM/<t0>/stress.dat holds the
+particle stress (compression < 0) split into normal contact (NC), shear
+contact (SC), normal lubrication (NL) and shear lubrication (SL); eta_r
+counts the particle stress only, as the thesis does.
+"""
+
+import glob
+import os
+
+import numpy as np
+
+from fdmPost.rheology import block_mean
+
+PARTS = ("normalContact", "shearContact", "normalLubrication",
+         "shearLubrication")
+
+# Article 2 constants (eqs 14-16)
+MU1, MU2, I0, INTRINSIC = 0.36, 0.7, 0.0133, 2.5
+
+
+def phi_m(mu_m):
+    """Maximum flowing fraction against contact friction (eq 13)."""
+    return 0.6301 - 0.0794 * (1 - np.exp(-mu_m / 0.4032))
+
+
+def viscous_number(phi, phim):
+    """I_v from phi/phi_m = 1/(1 + I_v^(1/2)) (eq 15)."""
+    return (phim / phi - 1) ** 2
+
+
+def model_mu(iv, phim):
+    """mu(I_v) = mu_c + mu_h (eq 14)."""
+    phi = phim / (1 + np.sqrt(iv))
+    return MU1 + (MU2 - MU1) / (1 + I0 / iv) + iv * (1 - phi) ** -INTRINSIC
+
+
+def model_eta(phi, phim):
+    """eta_r(phi) (eq 16); the last term is the lubrication part."""
+    x = (phim / phi - 1) ** 2
+    return MU1 / x + (MU2 - MU1) / (x + I0) + (1 - phi) ** -INTRINSIC
+
+
+def read_series(case):
+    """Concatenate the stress.dat files of a case (restarts in time order)."""
+    files = sorted(glob.glob(os.path.join(
+        case, "postProcessing", "lubricatedDEM", "*", "stress.dat")),
+        key=lambda f: float(os.path.basename(os.path.dirname(f))))
+    if not files:
+        raise SystemExit("no postProcessing/lubricatedDEM/*/stress.dat in "
+                         + case)
+    with open(files[0]) as f:
+        head = f.readline()
+    eta = float(head.split("viscosity")[1].split(",")[0])
+    rate = float(head.split("shear rate")[1])
+    d = np.vstack([np.loadtxt(f, ndmin=2) for f in files])
+    _, keep = np.unique(d[:, 0], return_index=True)
+    return d[keep], eta, rate
+
+
+def averages(case, start_strain, blocks=5):
+    """Time averages after start_strain with block standard errors: eta_r,
+    mu = sigma_xy/P, P = -sigma_yy, N1/sigma_xy, N2/sigma_xy, the share of
+    each part in sigma_xy, phi, contacts per particle pair list."""
+    d, eta, rate = read_series(case)
+    d = d[d[:, 1] >= start_strain]
+    if len(d) < blocks:
+        raise SystemExit("too few records after strain %g" % start_strain)
+    s = {c: np.zeros(len(d)) for c in ("xx", "yy", "zz", "xy")}
+    part_xy = {}
+    for p, name in enumerate(PARTS):
+        cols = 6 + 4 * p
+        for k, c in enumerate(("xx", "yy", "zz", "xy")):
+            s[c] += d[:, cols + k]
+        part_xy[name] = d[:, cols + 3]
+    scale = eta * abs(rate)
+    out = {"phi": d[0, 2], "records": len(d),
+           "strain": (d[0, 1], d[-1, 1])}
+    out["eta_r"] = block_mean(s["xy"] / scale, blocks)
+    out["P"] = block_mean(-s["yy"] / scale, blocks)
+    xy, P = out["eta_r"][0], out["P"][0]
+    out["mu"] = xy / P
+    out["N1"] = block_mean((s["xx"] - s["yy"]) / scale, blocks)[0] / xy
+    out["N2"] = block_mean((s["yy"] - s["zz"]) / scale, blocks)[0] / xy
+    out["Iv"] = 1 / P
+    out["share"] = {n: part_xy[n].mean() / (scale * xy) for n in PARTS}
+    out["contacts"] = d[:, 4].mean()
+    return out, d, eta, rate

@@ -1,0 +1,104 @@
+#!/bin/bash
+# Case test: lubricatedDEMFoam (lubrication-only DEM, Lees-Edwards cell).
+# A dilute bidisperse packing (phi 0.3, 13^3 cell) sheared to strain 0.4:
+#  - a restart from the state written at 0.2 ends bitwise where the straight
+#    run ends (positions, velocities, pair history);
+#  - the time series is written and the mean fluctuation momentum stays
+#    zero (pairwise forces, checked to 1e-10 of the rms momentum);
+#  - a deltaT above the critical step min sqrt(m/k) stops before the run
+#    with a message naming system/controlDict and deltaT.
+source "${0%/*}/caseTestFunctions"
+
+work=$(caseWorkDir lubricatedShear)
+tutorial="$FDM_PROJECT_DIR/tutorials/lubricatedShear"
+setUp()
+{
+    mkdir -p "$1"
+    cp -r "$tutorial"/{system,constant} "$1"/
+    sed -i -e 's/(16 16 16)/(13 13 13)/' "$1/constant/particleProperties"
+    sed -i -e 's/^endTime .*/endTime 0.4;/' -e 's/^writeInterval .*/writeInterval 0.2;/' \
+        -e 's/^deltaT .*/deltaT 1e-4;/' "$1/system/controlDict"
+    sed -i 's/^    stiffness .*/    stiffness 1e5;/' "$1/constant/particleProperties"
+    (cd "$1" && fdmPackParticles --box 13 13 13 --walls '' --phi 0.3 \
+        --seed 2 -o constant/particleList > log.fdmPackParticles)
+}
+
+setUp "$work/straight"
+(cd "$work/straight" && runLogged lubricatedDEMFoam) || exit 1
+
+setUp "$work/restarted"
+(
+    cd "$work/restarted" || exit 1
+    sed -i 's/^endTime .*/endTime 0.2;/' system/controlDict
+    runLogged lubricatedDEMFoam || exit 1
+    sed -i 's/^endTime .*/endTime 0.4;/' system/controlDict
+    mv log.lubricatedDEMFoam log.first
+    runLogged lubricatedDEMFoam
+) || exit 1
+
+setUp "$work/badDeltaT"
+(
+    cd "$work/badDeltaT" || exit 1
+    sed -i 's/^deltaT .*/deltaT 0.01;/' system/controlDict
+    if lubricatedDEMFoam > log.lubricatedDEMFoam 2>&1
+    then
+        echo "FAILED: deltaT 0.01 accepted"; exit 1
+    fi
+    grep -q "deltaT 0.01 in system/controlDict is above the critical step" \
+        log.lubricatedDEMFoam \
+        || { echo "FAILED: no clear deltaT message"; tail -n 15 log.lubricatedDEMFoam; exit 1; }
+) || exit 1
+
+"$FDM_PYTHON" - "$work" <<'PY'
+import glob, os, re, sys
+import numpy as np
+work = sys.argv[1]
+
+def state(case):
+    times = [d for d in os.listdir(case) if re.match(r"^[0-9.]+$", d)]
+    last = max(times, key=float)
+    return last, open(os.path.join(case, last, "particleState")).read()
+
+def numbers(text, key):
+    m = re.search(r"\n" + key + r"\s+\d+\s*\((.*?)\n\)\s*;", text, re.S)
+    return np.array([float(v) for v in re.findall(r"[-+0-9.eE]+", m.group(1))])
+
+ok = True
+ts, s = state(os.path.join(work, "straight"))
+tr, r = state(os.path.join(work, "restarted"))
+print("   last times: straight %s, restarted %s" % (ts, tr))
+for key in ("position", "velocity", "angularVelocity"):
+    a, b = numbers(s, key), numbers(r, key)
+    same = a.shape == b.shape and np.array_equal(a, b)
+    print("   restart %-16s bitwise %s" % (key, same))
+    ok &= same and ts == tr
+
+def history(text):
+    """Active pairs -> (ln gap, shear force); inactive entries are stale"""
+    pairs = numbers(text, "pairs").astype(int).reshape(-1, 2)
+    active = numbers(text, "pairActive").astype(bool)
+    gap = numbers(text, "pairLogGap")
+    force = numbers(text, "pairShearForce").reshape(-1, 3)
+    return {tuple(p): (g, tuple(f)) for p, a, g, f
+            in zip(pairs, active, gap, force) if a}
+
+hs, hr = history(s), history(r)
+same = hs == hr
+print("   restart pair history (%d active pairs) bitwise %s" % (len(hs), same))
+ok &= same and len(hs) > 0
+
+v = numbers(s, "velocity").reshape(-1, 3)
+rad = numbers(s, "radius")
+m = rad ** 3
+p = (m[:, None] * v).sum(0)
+rms = np.sqrt(((m[:, None] * v) ** 2).sum())
+print("   net fluctuation momentum %.2e of rms %.2e" % (np.abs(p).max(), rms))
+ok &= np.abs(p).max() < 1e-10 * rms
+
+d = np.loadtxt(glob.glob(os.path.join(work, "straight", "postProcessing",
+                                      "lubricatedDEM", "0", "stress.dat"))[0])
+print("   %d time-series rows, final strain %.3f, eta_r %.3f"
+      % (len(d), d[-1, 1], d[-1, 9::4].sum()))
+ok &= len(d) > 10 and abs(d[-1, 1] - 0.4) < 1e-3 and np.isfinite(d).all()
+sys.exit(0 if ok else 1)
+PY
