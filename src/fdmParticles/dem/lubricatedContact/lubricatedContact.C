@@ -20,6 +20,7 @@ Foam::scalar Foam::fdm::lubricatedContact::gapUpdate
     const scalar alphaEps,
     const scalar alpha,
     const scalar dtStar,
+    scalar& gap,
     scalar& dGapdUn
 )
 {
@@ -39,8 +40,8 @@ Foam::scalar Foam::fdm::lubricatedContact::gapUpdate
       : std::log(2.0) + logOld - std::log(dtStar) - std::log(root - B);
 
     // Implicit differentiation of the quadratic: (2 A x - B) dx = x dB
-    const scalar x = std::exp(logX);
-    dGapdUn = x/(2*A*x - B);
+    gap = std::exp(logX);
+    dGapdUn = gap/(2*A*gap - B);
     return logX;
 }
 
@@ -148,8 +149,9 @@ Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
     lubricatedPairLoads loads;
 
     // Normal: implicit gap update (A.5-A.7), split at a contact change
+    scalar logU = state.logGap;
+    scalar u = std::exp(logU);
     {
-        scalar logU = state.logGap;
         bool contact = state.contact;
         scalar remaining = dt*g_/(1.5*pi*viscosity_*a);
         scalar dGapdUn = 0;
@@ -157,17 +159,21 @@ Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
         for (label pass = 0; pass < 3; ++pass)
         {
             const scalar alpha = contact ? kRatio : 0;
-            const scalar logX =
-                gapUpdate(logU, un, alpha*eps, alpha, remaining, dGapdUn);
-            const bool contactNew = std::exp(logX) < eps;
+            scalar x;
+            const scalar logX = gapUpdate
+            (
+                logU, un, alpha*eps, alpha, remaining, x, dGapdUn
+            );
+            const bool contactNew = x < eps;
             if (contactNew == contact || pass == 2)
             {
                 logU = logX;
+                u = x;
                 break;
             }
 
             // Eq 20 (sign of F.2-2): the time at which u reaches eps
-            const scalar tc = (std::exp(logU) - eps)/(eps*(eps - un));
+            const scalar tc = (u - eps)/(eps*(eps - un));
             if (!(tc > 0 && tc < remaining))
             {
                 // Rounding at the threshold: redo the step in the new state
@@ -175,11 +181,11 @@ Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
                 continue;
             }
             logU = std::log(eps);
+            u = eps;
             remaining -= tc;
             contact = contactNew;
         }
 
-        const scalar u = std::exp(logU);
         state.logGap = logU;
         state.contact = u < eps;
 
@@ -188,8 +194,6 @@ Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
         loads.normalLubrication = g_*a*(un - u) - loads.normalContact;
         loads.normalStiffness = g_*(1 - dGapdUn);
     }
-
-    const scalar u = std::exp(state.logGap);
 
     // Tangential: turn the stored force with the pair (A.8)
     vector Fs = state.shearForce;

@@ -142,6 +142,9 @@ Foam::fdm::lubricatedDEM::lubricatedDEM
                 << abort(FatalError);
         }
     }
+
+    // The images' offset follows the time from here on (setTime)
+    setTime(time_);
 }
 
 
@@ -191,7 +194,6 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
     {
         skin_ = 0.3*max(radius_);
     }
-    setTime(time_);
     if (searchDue())
     {
         searchPairs();
