@@ -52,6 +52,7 @@ setUp "$work/badDeltaT"
 "$FDM_PYTHON" - "$work" <<'PY'
 import glob, os, re, sys
 import numpy as np
+from fdmPost.particleCase import read_list
 work = sys.argv[1]
 
 def state(case):
@@ -59,9 +60,11 @@ def state(case):
     last = max(times, key=float)
     return last, open(os.path.join(case, last, "particleState")).read()
 
+WIDTH = {"position": 3, "velocity": 3, "angularVelocity": 3, "radius": 1,
+         "pairs": 2, "pairActive": 1, "pairLogGap": 1, "pairShearForce": 3}
+
 def numbers(text, key):
-    m = re.search(r"\n" + key + r"\s+\d+\s*\((.*?)\n\)\s*;", text, re.S)
-    return np.array([float(v) for v in re.findall(r"[-+0-9.eE]+", m.group(1))])
+    return read_list(text, key, WIDTH[key])
 
 ok = True
 ts, s = state(os.path.join(work, "straight"))
@@ -75,10 +78,10 @@ for key in ("position", "velocity", "angularVelocity"):
 
 def history(text):
     """Active pairs -> (ln gap, shear force); inactive entries are stale"""
-    pairs = numbers(text, "pairs").astype(int).reshape(-1, 2)
+    pairs = numbers(text, "pairs").astype(int)
     active = numbers(text, "pairActive").astype(bool)
     gap = numbers(text, "pairLogGap")
-    force = numbers(text, "pairShearForce").reshape(-1, 3)
+    force = numbers(text, "pairShearForce")
     return {tuple(p): (g, tuple(f)) for p, a, g, f
             in zip(pairs, active, gap, force) if a}
 
@@ -87,7 +90,7 @@ same = hs == hr
 print("   restart pair history (%d active pairs) bitwise %s" % (len(hs), same))
 ok &= same and len(hs) > 0
 
-v = numbers(s, "velocity").reshape(-1, 3)
+v = numbers(s, "velocity")
 rad = numbers(s, "radius")
 m = rad ** 3
 p = (m[:, None] * v).sum(0)

@@ -12,7 +12,7 @@ import re
 import numpy as np
 
 
-def _list(text, key, width):
+def read_list(text, key, width):
     """Parse 'key N ( (c1 .. cwidth) ... );' (width > 1) or 'key N ( s ...
     );' (width 1) from an OpenFOAM dictionary text; also the uniform short
     form 'key N{value};'.  Returns an N x width (or N) array."""
@@ -41,10 +41,10 @@ def particle_state(case, time):
         text = f.read()
     keys = ["position", "velocity", "angularVelocity", "previousVelocity",
             "force", "torque"]
-    state = {k: _list(text, k, 3) for k in keys}
+    state = {k: read_list(text, k, 3) for k in keys}
     for k, width in (("stresslet", 6), ("dipoleTrace", 1)):
         try:
-            state[k] = _list(text, k, width)
+            state[k] = read_list(text, k, width)
         except KeyError:
             pass
     return state
