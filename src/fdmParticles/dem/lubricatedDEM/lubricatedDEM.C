@@ -211,7 +211,9 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
     nInteractions_ = 0;
     nContacts_ = 0;
     nCrushed_ = 0;
-    const scalar logCrushed = std::log(0.01*model_.roughness());
+    // Smooth spheres (roughness 0) never touch: no crushed threshold
+    const scalar logCrushed =
+        model_.roughness() > 0 ? std::log(0.01*model_.roughness()) : -GREAT;
 
     forAll(pairs_, k)
     {
