@@ -5,6 +5,8 @@
 #    run ends (positions, velocities, pair history);
 #  - the time series is written and the mean fluctuation momentum stays
 #    zero (pairwise forces, checked to 1e-10 of the rms momentum);
+#  - output{track} writes the tracked particles' positions (last row equal
+#    to the final particleState to the 12 digits written);
 #  - a deltaT above the critical step min sqrt(m/k) stops before the run
 #    with a message naming system/controlDict and deltaT.
 source "${0%/*}/caseTestFunctions"
@@ -18,7 +20,9 @@ setUp()
     sed -i -e 's/(16 16 16)/(13 13 13)/' "$1/constant/particleProperties"
     sed -i -e 's/^endTime .*/endTime 0.4;/' -e 's/^writeInterval .*/writeInterval 0.2;/' \
         -e 's/^deltaT .*/deltaT 1e-4;/' "$1/system/controlDict"
-    sed -i 's/^    stiffness .*/    stiffness 1e5;/' "$1/constant/particleProperties"
+    sed -i -e 's/^    stiffness .*/    stiffness 1e5;/' \
+        -e 's/^    interval .*/    interval 100; track (0 5);/' \
+        "$1/constant/particleProperties"
     (cd "$1" && fdmPackParticles --box 13 13 13 --walls '' --phi 0.3 \
         --seed 2 -o constant/particleList > log.fdmPackParticles)
 }
@@ -103,5 +107,13 @@ d = np.loadtxt(glob.glob(os.path.join(work, "straight", "postProcessing",
 print("   %d time-series rows, final strain %.3f, eta_r %.3f"
       % (len(d), d[-1, 1], d[-1, 9::4].sum()))
 ok &= len(d) > 10 and abs(d[-1, 1] - 0.4) < 1e-3 and np.isfinite(d).all()
+
+tracks = np.loadtxt(os.path.join(work, "straight", "postProcessing",
+                                  "lubricatedDEM", "0", "tracks.dat"))
+x = numbers(s, "position")
+err = np.abs(tracks[-1, 1:] - np.concatenate([x[0], x[5]])).max()
+print("   tracks.dat: %d rows, last row against particleState %.1e"
+      % (len(tracks), err))
+ok &= len(tracks) == len(d) and err < 1e-9 * np.abs(x).max()
 sys.exit(0 if ok else 1)
 PY

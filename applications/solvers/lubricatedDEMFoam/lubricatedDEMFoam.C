@@ -28,12 +28,16 @@ Description
     output
     {
         interval    100;            // steps between time-series rows
+        track       (0 1);          // optional: write these particles'
+                                    // positions to tracks.dat
     }
     \endverbatim
 
     Writes postProcessing/lubricatedDEM/<startTime>/stress.dat: time,
     strain, phi, interactions, contacts, stability number and the xx, yy,
-    zz, xy stresses of the four parts NC, SC, NL, SL (compression < 0).
+    zz, xy stresses of the four parts NC, SC, NL, SL (compression < 0);
+    with output{track}, tracks.dat: time and the positions of those
+    particles.
 
 \*---------------------------------------------------------------------------*/
 
@@ -80,12 +84,11 @@ int main(int argc, char *argv[])
     const scalar dt = runTime.deltaTValue();
     checkTimeStep(dem, dt, runTime);
 
-    const label outputInterval = max
-    (
-        label(1),
-        properties.subOrEmptyDict("output").getOrDefault<label>("interval", 100)
-    );
+    const dictionary output(properties.subOrEmptyDict("output"));
+    const label outputInterval =
+        max(label(1), output.getOrDefault<label>("interval", 100));
     demSeries series(runTime, dem);
+    demTracks tracks(runTime, dem, output);
 
     Info<< nl << "Starting time loop" << nl << endl;
 
@@ -107,6 +110,7 @@ int main(int argc, char *argv[])
         if (stepCount % outputInterval == 0)
         {
             series.append(dem);
+            tracks.append(dem);
         }
         // A progress line every 10 s of wall time and at the end
         const bool last =
