@@ -26,7 +26,7 @@ References (independent of the DEM):
              [--jobs 2]
 
 writes results.dat, report.md and demPairShear.png here (cases under
-build/validation/demPairShear).  About 1 min on 2 cores.
+build/validation/demPairShear).  About 20 s on 2 cores.
 """
 
 import argparse
