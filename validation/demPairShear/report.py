@@ -5,6 +5,7 @@
 import os
 
 import numpy as np
+from fdmPost.report import write_markdown  # noqa: E402
 
 
 def write(here, rows, y_exit, eps_rough, cutoff, tol_traj, tol_sym):
@@ -71,7 +72,5 @@ def write(here, rows, y_exit, eps_rough, cutoff, tol_traj, tol_sym):
         "symmetry %g d0 for smooth spheres, exit offset %g %% for rough ones."
         % (100 * tol_traj, tol_sym, 100 * tol_traj), "",
         "Result: %s" % ("PASS" if ok_all else "FAIL")]
-    with open(os.path.join(here, "report.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_markdown(os.path.join(here, "report.md"), lines)
     return ok_all

@@ -26,6 +26,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
 from fdmResistance import pairShear  # noqa: E402
+from fdmPost.report import write_markdown  # noqa: E402
 
 TARGET_AB = 0.02
 TARGET_MIRROR = 0.01
@@ -147,9 +148,7 @@ def main():
               "<= %g %%; r_y deviation <= %g a." % (
                   TARGET_AB, 100 * TARGET_MIRROR, TARGET_TRAJECTORY), "",
               "Result: %s" % ("PASS" if ok else "FAIL")]
-    with open(os.path.join(HERE, "mobility.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_markdown(os.path.join(HERE, "mobility.md"), lines)
 
 
 if __name__ == "__main__":

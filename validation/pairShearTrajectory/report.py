@@ -18,6 +18,7 @@ import numpy as np
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
 from fdmResistance import pairShear  # noqa: E402
+from fdmPost.report import write_markdown  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -60,9 +61,7 @@ def main(work, values):
     lines += ["", "Lines: unbounded theory (fdmResistance.pairShear). "
               "Targets: asymmetry <= 5 %, deviation <= 0.05 a.", "",
               "Result: %s" % ("PASS" if ok else "FAIL")]
-    with open(os.path.join(HERE, "report.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_markdown(os.path.join(HERE, "report.md"), lines)
 
 
 if __name__ == "__main__":

@@ -16,6 +16,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from dragFactor import drag_factor  # noqa: E402
 from fdmPost.particleCase import hasimoto_K  # noqa: E402,I100
+from fdmPost.report import write_markdown  # noqa: E402
 
 # Published FDM values (Orsi 2022, Table 4.1): L/a -> (K, sigma_K, error %)
 THESIS = {8: (1.532059, 0.014381, 0.11), 10: (1.389611, 0.011877, 0.11),
@@ -77,9 +78,7 @@ def main(sizes):
                      % (L, phi, KH, K, s, e, thK, ths, the, min(its), max(its),
                         tol, "PASS" if p else "FAIL"))
     lines += ["", "Result: %s" % ("PASS" if ok else "FAIL")]
-    with open(os.path.join(here, "report.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_markdown(os.path.join(here, "report.md"), lines)
 
     import matplotlib
     matplotlib.use("Agg")

@@ -16,6 +16,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import reference  # noqa: E402
+from fdmPost.report import write_markdown  # noqa: E402
 
 
 def load():
@@ -80,9 +81,7 @@ def main():
               "The FDM-alone column is one position, the sub-grid column the "
               "mean of all: part of their difference at epsilon >= 0.15, where "
               "the Y corrections are off, is the position scatter."]
-    with open(os.path.join(HERE, "report.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_markdown(os.path.join(HERE, "report.md"), lines)
 
     import matplotlib
     matplotlib.use("Agg")

@@ -6,6 +6,7 @@ cost per unit strain, the speed-up of the default scheme over the thesis
 scheme at equal lambda residual, and memory per 10^6 cells."""
 
 import os
+from fdmPost.report import write_markdown  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PUBLISHED = (38, 84)
@@ -82,6 +83,4 @@ def main(rows, base, mcells):
                              dt, core_s(r) / dt,
                              PUBLISHED[0] / THESIS_DT / (core_s(r) / dt),
                              PUBLISHED[1] / THESIS_DT / (core_s(r) / dt)))
-    with open(os.path.join(HERE, "report.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_markdown(os.path.join(HERE, "report.md"), lines)

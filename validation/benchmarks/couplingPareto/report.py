@@ -11,6 +11,7 @@ import numpy as np
 here = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(here, "..", "..", "periodicArrayDrag"))
 from dragFactor import drag_factor  # noqa: E402
+from fdmPost.report import write_markdown  # noqa: E402
 
 L = 8.0
 
@@ -58,9 +59,7 @@ def main():
                          " (thesis) and %.1e (Anderson)."
                          % (tol, t[0][3] / a[0][3], t[0][2] / a[0][2],
                             t[0][4], a[0][4]))
-    with open(os.path.join(here, "report.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_markdown(os.path.join(here, "report.md"), lines)
 
     import matplotlib
     matplotlib.use("Agg")

@@ -15,6 +15,7 @@ sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
 from dragFactor import drag_factor  # noqa: E402
 from fdmPost.particleCase import hasimoto_K  # noqa: E402
+from fdmPost.report import write_markdown  # noqa: E402
 
 L = 8.0
 
@@ -49,9 +50,7 @@ def main(work):
               "error of std/2, which hides the discretisation error of the "
               "mean (validation/periodicArrayDrag, 64 positions: -0.007 % "
               "at a/5)."]
-    with open(os.path.join(HERE, "report.md"), "w") as f:
-        f.write("\n".join(lines) + "\n")
-    print("\n".join(lines))
+    write_markdown(os.path.join(HERE, "report.md"), lines)
 
     import matplotlib
     matplotlib.use("Agg")
