@@ -78,7 +78,7 @@ timePrecision   8;
 particles       ((suspended (%.17g %.17g %.17g) 1)
                  (suspended (%.17g %.17g %.17g) 1));
 density         %g;
-stokesDrag      on;
+drag { viscosity 1; }
 cell { min (0 0 0); max (%g %g %g); shearRate 1; }
 lubricatedContact
 {

@@ -6,9 +6,11 @@ Application
     lubricatedDEMFoam
 
 Description
-    Lubrication-only DEM (thesis 2): spheres in a tri-periodic Lees-Edwards
-    cell sheared at an imposed rate, interacting through the implicit
-    lubricated contact model only, with no fluid solve.  Same case
+    Lubrication-only DEM (thesis 2): spheres in a Lees-Edwards cell sheared
+    at an imposed rate, interacting through the implicit lubricated contact
+    model only, with no fluid solve.  The cell is tri-periodic, or open in
+    one direction with a floor of fixed spheres and gravity (viscous
+    resuspension, thesis 2 article 3).  Same case
     conventions as fdmSuspensionFoam: system/controlDict (deltaT, endTime,
     writeInterval, function objects), constant/particleProperties, the
     particle list of fdmPackParticles, <time>/particleState for restarts.
@@ -22,8 +24,26 @@ Description
         min         (0 0 0);
         max         (20 20 20);
         shearRate   1;              // gammaDot along x, gradient along y
+        open        ();             // directions without periodic images,
+                                    // e.g. (y): gravity along the gradient
     }
-    stokesDrag      off;            // drag against the affine flow (spec B.2)
+    drag                            // Stokes drag against the affine flow
+    {
+        viscosity           0;      // on every particle (spec B.2: eta_f;
+                                    // resuspension along y: eta_f/30)
+        isolatedViscosity   0;      // extra, on particles with fewer than
+        isolatedBelow       3;      // isolatedBelow interactions (D.1)
+    }
+    fixedGroups     ();             // groups held fixed (rough floor made
+                                    // by fdmPackParticles --attach-walls),
+                                    // carried by the affine flow
+    gravity                         // optional: weight (rho_p - rho_f) V g
+    {
+        direction       (0 -1 0);
+        shieldsNumber   2;          // eta gammaDot/((rho_p - rho_f) g a)
+        // value        (0 -400 0); // or the acceleration itself
+    }
+    fluidDensity    0;              // rho_f (buoyancy)
     lubricatedContact { ... }       // see lubricatedContact.H
     output
     {
@@ -37,7 +57,8 @@ Description
     strain, phi, interactions, contacts, stability number and the xx, yy,
     zz, xy stresses of the four parts NC, SC, NL, SL (compression < 0);
     with output{track}, tracks.dat: time and the positions of those
-    particles.
+    particles.  <time>/particleState also holds each particle's stresslets
+    of the four parts (stresslet_<part>), for local stress profiles.
 
 \*---------------------------------------------------------------------------*/
 
@@ -51,6 +72,7 @@ Description
 #include "lubricatedDEM.H"
 #include "particleList.H"
 #include "readBounded.H"
+#include "HashSet.H"
 
 using namespace Foam;
 

@@ -167,11 +167,26 @@ def min_clearance(x, radii, box):
     return worst
 
 
-def wall_layer(box, axis, side, radius, coverage, seed=1, gap=0.01):
+def _plane_offsets(pts, p, box, plane):
+    """In-plane separations of the points pts from p, minimum image along
+    the periodic directions of the plane."""
+    d = np.asarray(pts, dtype=float) - p
+    for k, ax in enumerate(plane):
+        if box.periodic[ax]:
+            d[..., k] -= box.span[ax] * np.round(d[..., k] / box.span[ax])
+    return d
+
+
+def wall_layer(box, axis, side, radius, coverage, seed=1, gap=0.01,
+               jammed=False):
     """Spheres touching (at clearance gap) the wall normal to axis on side
     'lower' or 'upper', placed by random sequential addition in the plane
     up to an area coverage (fraction of the wall covered by their discs;
-    random sequential addition jams near 0.547)."""
+    random sequential addition jams near 0.547).
+
+    jammed: go on until no disc fits anywhere (holes found on a grid of
+    spacing radius/10), so that no sphere of the same radius can pass
+    through the layer: a floor under an open top (resuspension)."""
     rng = np.random.default_rng(seed + 7919 * (side == "upper") + 104729 * axis)
     plane = [k for k in range(3) if k != axis]
     area = box.span[plane[0]] * box.span[plane[1]]
@@ -179,17 +194,27 @@ def wall_layer(box, axis, side, radius, coverage, seed=1, gap=0.01):
     clearance = 2 * radius + gap * radius
     pts = []
     for attempt in range(200 * max(target, 1)):
-        if len(pts) >= target:
+        if len(pts) >= target and not jammed:
             break
         p = box.lo[plane] + rng.random(2) * box.span[plane]
-        if pts:
-            d = np.asarray(pts) - p
-            for k, ax in enumerate(plane):
-                if box.periodic[ax]:
-                    d[:, k] -= box.span[ax] * np.round(d[:, k] / box.span[ax])
-            if (np.sqrt((d**2).sum(1)) < clearance).any():
-                continue
+        if pts and (np.sqrt((_plane_offsets(pts, p, box, plane)**2).sum(1))
+                    < clearance).any():
+            continue
         pts.append(p)
+    while jammed:
+        # The grid point farthest from every centre: a hole while a disc fits
+        n = [max(2, int(np.ceil(10 * box.span[ax] / radius))) for ax in plane]
+        g = np.stack(np.meshgrid(
+            *[box.lo[ax] + (np.arange(m) + 0.5) * box.span[ax] / m
+              for ax, m in zip(plane, n)], indexing="ij"), -1).reshape(-1, 2)
+        dist = np.full(len(g), np.inf)
+        for c in pts:
+            dist = np.minimum(dist, np.sqrt(
+                (_plane_offsets(g, c, box, plane)**2).sum(1)))
+        k = int(np.argmax(dist))
+        if dist[k] < clearance:
+            break
+        pts.append(g[k])
     x = np.zeros((len(pts), 3))
     if pts:
         x[:, plane] = pts

@@ -55,6 +55,19 @@ class Packing(unittest.TestCase):
         self.assertTrue(np.allclose(x[:len(lower), 1], -4 + 1.01))
         self.assertGreater(min_clearance(x, r, self.box), 0.01 * (1 - 1e-3))
 
+    def test_jammed_floor_lets_no_sphere_through(self):
+        # A sphere passes the layer only where a point of the plane lies
+        # 2a or more from every centre: probe 20000 random points
+        floor = wall_layer(self.box, 1, "lower", 1.0, 0.1, seed=5,
+                           jammed=True)
+        rng = np.random.default_rng(0)
+        probes = self.box.lo[[0, 2]] + rng.random((20000, 2)) * self.box.span[[0, 2]]
+        d = probes[:, None, :] - floor[None, :, [0, 2]]
+        d -= self.box.span[[0, 2]] * np.round(d / self.box.span[[0, 2]])
+        self.assertLess(np.sqrt((d**2).sum(-1)).min(1).max(), 2.0)
+        coverage = len(floor) * np.pi / (self.box.span[0] * self.box.span[2])
+        self.assertGreater(coverage, 0.45)   # near the RSA jamming 0.547
+
     def test_impossible_fraction_is_reported(self):
         r = np.ones(200)   # phi = 1.6 in the 8^3 box
         with self.assertRaises(RuntimeError):

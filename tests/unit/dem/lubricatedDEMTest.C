@@ -309,3 +309,119 @@ TEST(lubricatedDEM, stabilityNumberFlagsTooLargeSteps)
         }
     }
 }
+
+
+namespace
+{
+
+// Cell periodic in x and z, open along y (gravity along the gradient)
+fdm::periodicBox openY(const scalar L, const scalar H)
+{
+    return fdm::periodicBox(point::zero, point(L, H, L),
+        FixedList<bool, 3>({true, false, true}));
+}
+
+} // namespace
+
+
+TEST(lubricatedDEM, isolatedSphereFallsAtTheStokesVelocity)
+{
+    // A lone heavy sphere with drag eta_d against the affine flow
+    // gammaDot y e_x (spec D.1): terminal fluctuation velocity
+    // W/(6 pi (eta_d + eta_iso) a) downwards and no slip along x; the extra
+    // drag of isolated particles (below 3 interactions) adds eta_iso.
+    // Falling across the shear, the sphere lags the affine flow by
+    // v'_x = -m gammaDot v'_y/(6 pi eta a), its inertia
+    const scalar W = 2.0, etaD = 1.0/30, etaIso = 1.0, gammaDot = 0.5;
+    for (const scalar iso : {0.0, etaIso})
+    {
+        fdm::lubricatedDEM dem(openY(12, 200), gammaDot,
+            fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-2, 0.5, 2));
+        dem.setDrag(etaD);
+        dem.setIsolatedDrag(iso, 3);
+        dem.addParticle(point(6, 150, 6), 1, 1e-3);
+        dem.bodyForce(0) = vector(0, -W, 0);
+        for (label i = 0; i < 4000; ++i)
+        {
+            dem.step(1e-3);
+        }
+        const scalar c = 6*pi*(etaD + iso);
+        const scalar vExact = W/c;
+        const scalar lag = dem.masses()[0]*gammaDot*vExact/c;
+        EXPECT_NEAR(dem.velocities()[0].y()/vExact, -1, 1e-9);
+        EXPECT_NEAR(dem.velocities()[0].x()/lag, 1, 1e-6);
+    }
+}
+
+
+TEST(lubricatedDEM, fixedSpheresFollowTheAffineFlow)
+{
+    // A floor sphere at height y moves at gammaDot y e_x; it neither
+    // falls under load nor spins
+    const scalar gammaDot = 0.8, y = 3.0, t = 1.5;
+    fdm::lubricatedDEM dem(openY(12, 40), gammaDot,
+        fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-2, 0.5, 2));
+    dem.addParticle(point(2, y, 6), 1, 1e-3, false);
+    dem.addParticle(point(2, y + 2.1, 6), 1, 1e-3);
+    dem.bodyForce(1) = vector(0, -1, 0);
+    const label n = 1500;
+    for (label i = 0; i < n; ++i)
+    {
+        dem.step(t/n);
+    }
+    const scalar x = std::fmod(2 + gammaDot*y*t, 12.0);
+    EXPECT_NEAR(dem.positions()[0].x(), x, 1e-10);
+    EXPECT_EQ(dem.positions()[0].y(), y);
+    EXPECT_EQ(mag(dem.spins()[0]), 0);
+    EXPECT_GT(dem.nInteractions(), 0);
+}
+
+
+TEST(lubricatedDEM, floorCarriesTheWeightOfAPile)
+{
+    // Mobile spheres resting on a floor of fixed spheres at zero shear:
+    // at rest, the forces on the floor add up to the total weight
+    // (Newton's third law across the pair loads; the floor spheres are
+    // the only support)
+    fdm::lubricatedDEM dem(openY(8, 40), 0,
+        fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-2, 0.5, 1));
+    dem.setDrag(1);
+    label nFixed = 0;
+    for (const scalar x : {1.0, 3.0, 5.0, 7.0})
+    {
+        for (const scalar z : {1.0, 3.0, 5.0, 7.0})
+        {
+            dem.addParticle(point(x, 1, z), 1, 1e-2, false);
+            ++nFixed;
+        }
+    }
+    const scalar W = 5;
+    vector weight(Zero);
+    for (const point& x : {point(2, 2.6, 2), point(6, 2.6, 2),
+        point(2, 2.6, 6), point(6, 2.6, 6), point(4, 2.5, 4)})
+    {
+        const label i = dem.addParticle(x, 1, 1e-2);
+        dem.bodyForce(i) = vector(0, -W, 0);
+        weight += dem.bodyForce(i);
+    }
+    for (label i = 0; i < 60000; ++i)
+    {
+        dem.step(2e-4);
+    }
+    vector floorForce(Zero);
+    scalar vMax = 0;
+    for (label i = 0; i < dem.size(); ++i)
+    {
+        if (i < nFixed)
+        {
+            floorForce += dem.forces()[i];
+        }
+        else
+        {
+            vMax = max(vMax, mag(dem.velocities()[i]));
+        }
+    }
+    EXPECT_LT(vMax, 1e-6);
+    EXPECT_LT(mag(floorForce - weight)/mag(weight), 1e-4);
+
+}

@@ -57,7 +57,7 @@ void Foam::fdm::lubricatedDEM::searchPairs()
     const scalar listReach = 2*max(radius_) + reach() + skin_;
     for (direction d = 0; d < 3; ++d)
     {
-        if (2*listReach >= box_.span()[d])
+        if (box_.periodic(d) && 2*listReach >= box_.span()[d])
         {
             FatalErrorInFunction
                 << "The cell is too small for the interaction range: edge "
@@ -123,6 +123,8 @@ Foam::fdm::lubricatedDEM::lubricatedDEM
     shearRate_(shearRate),
     model_(model),
     dragViscosity_(0),
+    isolatedDragViscosity_(0),
+    isolatedBelow_(0),
     skin_(-1),
     timeSinceSearch_(GREAT),
     nSearches_(0),
@@ -133,14 +135,11 @@ Foam::fdm::lubricatedDEM::lubricatedDEM
     stabilityNumber_(0),
     time_(0)
 {
-    for (direction d = 0; d < 3; ++d)
+    if (box_.periodic(vector::Y) && !box_.periodic(vector::X))
     {
-        if (!box_.periodic(d))
-        {
-            FatalErrorInFunction
-                << "The lubricated DEM cell must be periodic in x, y and z"
-                << abort(FatalError);
-        }
+        FatalErrorInFunction
+            << "A cell periodic in y (Lees-Edwards images) must be periodic"
+            << " in x as well" << abort(FatalError);
     }
 
     // The images' offset follows the time from here on (setTime)
@@ -180,10 +179,26 @@ Foam::label Foam::fdm::lubricatedDEM::addParticle
 }
 
 
+void Foam::fdm::lubricatedDEM::setIsolatedDrag
+(
+    const scalar viscosity,
+    const label minInteractions
+)
+{
+    isolatedDragViscosity_ = viscosity;
+    isolatedBelow_ = minInteractions;
+}
+
+
 void Foam::fdm::lubricatedDEM::setTime(const scalar t)
 {
     time_ = t;
-    box_.setShearOffset(shearRate_*box_.span()[1]*time_);
+    // Sheared images only across periodic y (Lees-Edwards); an open y
+    // (gravity along the gradient) has none
+    if (box_.periodic(vector::Y))
+    {
+        box_.setShearOffset(shearRate_*box_.span()[1]*time_);
+    }
 }
 
 
@@ -206,6 +221,7 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
         s = Zero;
     }
     List<symmTensor> damping(n, Zero);
+    labelList nNeighbours(n, Zero);
     scalarList stiffness(n, Zero);
     scalarList spinStiffness(n, Zero);
     nInteractions_ = 0;
@@ -294,6 +310,8 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
         }
 
         ++nInteractions_;
+        ++nNeighbours[i];
+        ++nNeighbours[j];
         if (states_[k].contact)
         {
             ++nContacts_;
@@ -311,13 +329,18 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
     {
         if (!mobile_[i])
         {
+            // Fixed (wall) spheres are carried by the affine flow
+            position_[i].x() += dt*shearRate_*position_[i].y();
             continue;
         }
         const scalar m = mass_[i];
         const scalar J = inertia_[i];
         const scalar a = radius_[i];
-        const scalar cDrag = 6*pi*dragViscosity_*a;
-        const scalar cSpin = 8*pi*dragViscosity_*pow3(a);
+        const scalar drag =
+            dragViscosity_
+          + (nNeighbours[i] < isolatedBelow_ ? isolatedDragViscosity_ : 0);
+        const scalar cDrag = 6*pi*drag*a;
+        const scalar cSpin = 8*pi*drag*pow3(a);
 
         vector& v = velocity_[i];
         const vector F =
@@ -364,8 +387,16 @@ Foam::symmTensor Foam::fdm::lubricatedDEM::stress(const label part) const
 
 Foam::scalar Foam::fdm::lubricatedDEM::volumeFraction() const
 {
+    scalar V = 0;
+    forAll(radius_, i)
+    {
+        if (mobile_[i])
+        {
+            V += 4.0/3.0*pi*pow3(radius_[i]);
+        }
+    }
     const vector& L = box_.span();
-    return 4.0/3.0*pi*sum(pow3(radius_))/(L.x()*L.y()*L.z());
+    return V/(L.x()*L.y()*L.z());
 }
 
 
@@ -393,6 +424,16 @@ void Foam::fdm::lubricatedDEM::writeState(Ostream& os) const
     os.writeEntry("velocity", velocity_);
     os.writeEntry("angularVelocity", spin_);
     os.writeEntry("radius", radius_);
+    os.writeEntry("mobile", mobile_);
+    for (label p = 0; p < nStressParts; ++p)
+    {
+        // Output only (local stress profiles); not read back
+        os.writeEntry
+        (
+            word("stresslet_" + std::string(stressPartName(p))),
+            stresslet_[p]
+        );
+    }
 
     scalarList logGap(pairs_.size());
     boolList contact(pairs_.size());

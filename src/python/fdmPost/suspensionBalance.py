@@ -1,0 +1,150 @@
+"""Suspension balance model (SBM) predictions of steady volume-fraction
+profiles, with the normal-viscosity closures of the literature.
+
+Viscous resuspension (thesis 2, article 3, spec D.2): heavy particles
+sheared at a uniform rate gammaDot with gravity along direction i (2: the
+velocity gradient, 3: the vorticity) balance their weight with the
+particle normal stress sigma_ii = -eta_f gammaDot eta_ii(phi):
+
+    phi/Sh = -(d eta_ii/d phi) (d phi/d z)        (eq 3, z = height/a)
+
+with Sh = eta_f gammaDot/(drho g a).  Integrating from z to the top gives
+eq 6, eta_ii(phi(z)) = (1/Sh) int_z^inf phi dz', which inverts a measured
+profile.  Forward, eq 3 integrates in closed form along phi:
+
+    z(phi) = Sh int_phi^phi_b eta'(s)/s ds,   Sh eta_ii(phi_b) = V
+
+with phi_b the fraction on the floor and V the particle volume per unit
+floor area (in a): the floor carries the whole weight.  The top of the
+suspension is z(0), finite for the closures below (eta ~ phi^n, n >= 2).
+
+Closures (spec D.3-D.4), eta_ii = lambda_ii [r/(1 - r)]^n with r = phi/phi_m
+for the literature forms, and the new expressions of article 3:
+    eta_22 = r^9/(1 - r)^2 + 150 r^10                       (eq 9)
+    eta_33 = lambda_33(phi) eta_22,
+    lambda_33 = (phi/phi_rcp)^7.5/(1e-3 + (phi/phi_rcp)^6)   (eq 8; eq 10 as
+                printed lacks the exponents, spec F.2-13)
+
+Plane Poiseuille flow (thesis 1, appendix F): the shear stress is linear,
+|sigma_xy| = G |y|, and with the normal stress ratio
+Sigma_22(phi) = eta_22(phi)/eta_s(phi) the zero-flux steady state (F.10)
+is |y| Sigma_22(phi(y)) = C, clipped at phi_J in the plug; C follows from
+the mean volume fraction (F.11).
+"""
+
+import inspect
+
+import numpy as np
+from scipy import integrate, optimize
+
+PHI_RCP = 0.64
+
+
+def _ratio(phi, phim):
+    return np.asarray(phi, float) / phim
+
+
+def zarraga(phi, component=2, phim=0.62):
+    """Zarraga et al. (2000), n = 3: lambda 1.55, 1.36, 0.62."""
+    lam = {1: 1.55, 2: 1.36, 3: 0.62}[component]
+    r = _ratio(phi, phim)
+    return lam * (r / (1 - r))**3
+
+
+def boyer(phi, component=2, phim=0.585):
+    """Boyer et al. (2011), n = 2: lambda_22 = 1 (sigma_22 = P_p, spec
+    D.3), lambda_33 = 0.6."""
+    lam = {2: 1.0, 3: 0.6}[component]
+    r = _ratio(phi, phim)
+    return lam * (r / (1 - r))**2
+
+
+def morris_boulay(phi, component=2, phim=0.68):
+    """Morris & Boulay (1999), n = 2, K_n = 0.75: lambda_22 = 0.8 K_n,
+    lambda_33 = 0.38 as the thesis tabulates it (0.5 K_n = 0.375, spec
+    D.3)."""
+    lam = {1: 0.75, 2: 0.6, 3: 0.38}[component]
+    r = _ratio(phi, phim)
+    return lam * (r / (1 - r))**2
+
+
+def lambda33(phi):
+    """lambda_33(phi) of article 3 (eq 8, reading F.2-13)."""
+    q = np.asarray(phi, float) / PHI_RCP
+    return q**7.5 / (1e-3 + q**6)
+
+
+def chevremont(phi, component=2, phim=0.58):
+    """Article 3's new expressions: eta_22 (eq 9), eta_33 = lambda_33
+    eta_22 (eqs 8, 10)."""
+    r = _ratio(phi, phim)
+    eta22 = r**9 / (1 - r)**2 + 150 * r**10
+    return eta22 if component == 2 else lambda33(phi) * eta22
+
+
+CLOSURES = {"Chevremont (eq 9)": chevremont, "Boyer": boyer,
+            "Zarraga": zarraga, "Morris-Boulay": morris_boulay}
+
+
+def _derivative(eta, phi, component, h=1e-7):
+    return (eta(phi + h, component) - eta(phi - h, component)) / (2 * h)
+
+
+def resuspension_profile(eta, sh, volume, component=2, n=400):
+    """Steady profile of eq 3 for closure eta(phi, component) (one of
+    CLOSURES, diverging at its default phim): Shields number sh, particle
+    volume per unit floor area `volume` (in a).  Returns z (from the floor,
+    increasing, to the top where phi = 0), phi(z) and phi_b."""
+    phim = inspect.signature(eta).parameters["phim"].default
+    target = volume / sh
+    phib = optimize.brentq(lambda p: eta(p, component) - target,
+                           1e-6, phim * (1 - 1e-12))
+    phis = np.r_[phib * np.cos(np.linspace(0, np.pi / 2, n))[:-1], 0.0]
+
+    def slope(p):
+        return _derivative(eta, p, component) / p if p > 0 else 0.0
+
+    z = np.array([sh * integrate.quad(slope, p, phib, limit=200)[0]
+                  for p in phis])
+    return z, phis, phib
+
+
+def suspension_height(eta, sh, volume, component=2):
+    """Top of the suspension z(phi = 0) in a (eq 3 with the volume)."""
+    z, _, _ = resuspension_profile(eta, sh, volume, component)
+    return z[-1]
+
+
+def normal_viscosity_from_profile(z, phi, sh):
+    """Eq 6: eta_ii(z) = (1/Sh) int_z^top phi dz' by the trapezoidal rule
+    on the samples (z increasing, phi -> 0 at the top)."""
+    z = np.asarray(z, float)
+    phi = np.asarray(phi, float)
+    seg = 0.5 * (phi[1:] + phi[:-1]) * np.diff(z)
+    above = np.r_[np.cumsum(seg[::-1])[::-1], 0.0]
+    return above / sh
+
+
+def poiseuille_profile(sigma22, phi_mean, phi_j, y_max=0.5, n=401):
+    """Steady phi(y*) of the plane Poiseuille SBM (appendix F, eqs F.10-F.11):
+    |y*| Sigma_22(phi) = C on 0 <= y* <= y_max (half channel, y* in units
+    of the channel width), phi = phi_j where C/|y*| exceeds Sigma_22(phi_j)
+    (the jammed plug), C chosen so that the mean over [0, y_max] is
+    phi_mean.  sigma22(phi) must increase with phi.  Returns (y, phi, C)."""
+    y = np.linspace(0, y_max, n)
+    top = sigma22(phi_j)
+
+    def profile(c):
+        out = np.full_like(y, phi_j)
+        for k, yk in enumerate(y):
+            if yk > 0 and c / yk < top:
+                out[k] = optimize.brentq(lambda p: sigma22(p) - c / yk,
+                                         0.0, phi_j)
+        return out
+
+    def excess(c):
+        return np.trapz(profile(c), y) / y_max - phi_mean
+
+    lo, hi = 1e-12 * top, top * y_max
+    c = optimize.brentq(excess, lo, hi)
+    return y, profile(c), c

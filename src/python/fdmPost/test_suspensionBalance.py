@@ -1,0 +1,93 @@
+"""Unit tests of fdmPost.suspensionBalance: the closures against the values
+tabulated in spec D.4 (3 significant figures), the resuspension profile
+against the closed form of a quadratic closure and against eq 3 itself,
+the eq 6 inversion, and the Poiseuille zero-flux profile against its
+closed form for a linear closure."""
+
+import unittest
+
+import numpy as np
+from scipy import optimize
+
+from fdmPost import suspensionBalance as sbm
+
+
+def quadratic(phi, component=2, phim=2.0):
+    """eta = phi^2/2: eq 3 gives the linear profile phi = phi_b - z/Sh."""
+    return 0.5 * np.asarray(phi, float)**2
+
+
+class Closures(unittest.TestCase):
+
+    def test_spec_table_values(self):
+        # spec D.4 table (phi_m = 0.58 for eq 9; each literature form with
+        # its own phi_m), three significant figures
+        cases = [
+            (sbm.chevremont, 2, 0.174, 9.26e-4), (sbm.chevremont, 2, 0.290, 0.154),
+            (sbm.chevremont, 2, 0.464, 19.5), (sbm.chevremont, 3, 0.174, 3.78e-5),
+            (sbm.chevremont, 3, 0.290, 0.0422), (sbm.chevremont, 3, 0.464, 11.9),
+            (sbm.boyer, 2, 0.290, 0.966), (sbm.boyer, 2, 0.551, 263),
+            (sbm.zarraga, 2, 0.290, 0.923), (sbm.zarraga, 3, 0.290, 0.421),
+            (sbm.morris_boulay, 3, 0.290, 0.210), (sbm.morris_boulay, 3, 0.551, 6.93),
+        ]
+        for eta, comp, phi, ref in cases:
+            self.assertAlmostEqual(eta(phi, comp) / ref, 1, delta=6e-3,
+                                   msg=f"{eta.__name__} {comp} {phi}")
+
+    def test_lambda33_limits(self):
+        # spec D.5: about 0.2 at phi = 0.25, about 1 at phi_rcp
+        self.assertAlmostEqual(float(sbm.lambda33(0.25)), 0.2, delta=0.05)
+        self.assertAlmostEqual(float(sbm.lambda33(0.64)), 1.0, delta=0.01)
+
+
+class Resuspension(unittest.TestCase):
+
+    def test_quadratic_closure_gives_the_linear_profile(self):
+        sh, volume = 3.0, 2.0
+        z, phi, phib = sbm.resuspension_profile(quadratic, sh, volume)
+        self.assertAlmostEqual(phib, np.sqrt(2 * volume / sh), places=9)
+        self.assertLess(np.abs(phi - (phib - z / sh)).max(), 1e-6)
+        self.assertAlmostEqual(z[-1], sh * phib, places=6)
+
+    def test_profile_conserves_volume_and_solves_eq3(self):
+        for name, eta in sbm.CLOSURES.items():
+            for sh in (0.5, 4.0):
+                z, phi, phib = sbm.resuspension_profile(eta, sh, 8.0)
+                self.assertAlmostEqual(np.trapz(phi, z) / 8.0, 1, delta=1e-4)
+                self.assertAlmostEqual(sh * eta(phib, 2), 8.0, delta=1e-8)
+                # eq 3 at interior samples: phi/Sh = -eta'(phi) dphi/dz
+                k = slice(5, len(z) // 2)
+                dphidz = np.gradient(phi, z)[k]
+                deta = (eta(phi[k] + 1e-7, 2) - eta(phi[k] - 1e-7, 2)) / 2e-7
+                res = phi[k] / sh + deta * dphidz
+                self.assertLess(np.abs(res).max() / (phi[k] / sh).max(),
+                                2e-3, msg=f"{name} Sh {sh}")
+
+    def test_eq6_recovers_the_closure(self):
+        eta = sbm.chevremont
+        z, phi, _ = sbm.resuspension_profile(eta, 2.0, 8.0, n=2000)
+        recovered = sbm.normal_viscosity_from_profile(z, phi, 2.0)
+        bulk = phi > 0.3 * 0.58
+        err = np.abs(recovered[bulk] / eta(phi[bulk], 2) - 1).max()
+        self.assertLess(err, 1e-3)
+
+
+class Poiseuille(unittest.TestCase):
+
+    def test_linear_closure_gives_c_over_y(self):
+        # Sigma_22 = phi: phi = C/y, clipped at phi_J inside y_J = C/phi_J;
+        # the mean fixes C: phi_J y_J + C ln(y_max/y_J) = mean y_max
+        phij, mean, ymax = 0.6, 0.4, 0.5
+        y, phi, c = sbm.poiseuille_profile(lambda p: p, mean, phij, ymax,
+                                           n=20001)
+        exact = optimize.brentq(
+            lambda c: c + c * np.log(ymax * phij / c) - mean * ymax,
+            1e-6, phij * ymax)
+        self.assertAlmostEqual(c / exact, 1, delta=1e-4)
+        outside = y > c / phij
+        self.assertLess(np.abs(phi[outside] - c / y[outside]).max(), 1e-9)
+        self.assertTrue(np.all(phi[~outside] == phij))
+
+
+if __name__ == "__main__":
+    unittest.main()
