@@ -1,0 +1,222 @@
+"""Steady profiles of the viscous-resuspension tutorial against the
+suspension balance model (thesis 2, article 3; spec D).
+
+For each case (one Shields number) the particleState files from strain
+--start on give the time-averaged volume fraction phi(z) of the mobile
+spheres (exact sphere-slab volumes, eq 2.70 of thesis 1) and the binned
+normal stress sigma_ii(z) (stresslets of the spheres centred in a bin over
+its volume).  z is the height above the top of the floor spheres, in a.
+
+Printed and written to resuspension.md, with resuspension.png:
+  - the height of the suspension (phi = 0.05 on the way up) and the
+    centroid of the profile, against the SBM prediction of each closure
+    (fdmPost.suspensionBalance) for the same particle volume;
+  - the momentum balance: -sigma_ii(z)/(eta gammaDot) from the stresslets
+    against the weight above z, (1/Sh) int_z phi (eq 6);
+  - eta_ii(phi) recovered from the profile (eq 6) against eq 9, Boyer and
+    Zarraga, in the bulk (phi/phi_m >= 0.3, more than 5 a below the top,
+    as the thesis discards the interface, spec D.6).
+
+    plotResuspension.py CASE [CASE ...] [--start STRAIN]
+"""
+
+import argparse
+import glob
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
+                                "..", "..", "src", "python"))
+
+import numpy as np  # noqa: E402
+
+from fdmPost.particleCase import read_list  # noqa: E402
+from fdmPost.rheology import slab_volume  # noqa: E402
+from fdmPost.report import write_markdown  # noqa: E402
+from fdmPost import suspensionBalance as sbm  # noqa: E402
+
+PHI_TOP = 0.05
+
+
+def number(text, key):
+    m = re.search(r"\b%s\s+([-+0-9.eE]+)\s*;" % key, text)
+    return float(m.group(1))
+
+
+def vector(text, key):
+    m = re.search(r"\b%s\s+\(([^)]*)\)\s*;" % key, text)
+    return np.array(m.group(1).split(), float)
+
+
+def read_case(case, start, dz):
+    """Time-averaged phi(z) and the normal stress sigma_zz(z) after strain
+    `start`; z is the open direction of the cell (y: gravity along the
+    velocity gradient, component 2; z: along the vorticity, component 3)."""
+    with open(os.path.join(case, "constant", "particleProperties")) as f:
+        props = f.read()
+    sh = number(props, "shieldsNumber")
+    lo, hi = vector(props, "min"), vector(props, "max")
+    axis = "xyz".index(re.search(r"\bopen\s+\(\s*(\w)\s*\)", props).group(1))
+    span = hi - lo
+    area = np.prod(span) / span[axis]
+    times = sorted((float(os.path.basename(os.path.dirname(p))), p)
+                   for p in glob.glob(os.path.join(case, "*", "particleState")))
+    if start is None:
+        start = 0.5 * times[-1][0] if times else 0
+    times = [(t, p) for t, p in times if t >= start - 1e-6]
+    if not times:
+        sys.exit(f"plotResuspension: no particleState at strain >= {start}"
+                 f" in {case}")
+    phi_sum, syy_sum, u_sum, n_sum, edges = 0, 0, 0, 0, None
+    for t, path in times:
+        with open(path) as f:
+            text = f.read()
+        x = read_list(text, "position", 3)
+        a = read_list(text, "radius", 1)
+        mobile = read_list(text, "mobile", 1) > 0.5
+        s = sum(read_list(text, "stresslet_" + part, 6)
+                for part in ("normalContact", "shearContact",
+                             "normalLubrication", "shearLubrication"))
+        floor = np.mean(x[~mobile, axis] + a[~mobile])
+        if edges is None:
+            top = x[mobile, axis].max() + 4
+            edges = floor + np.arange(0, top - floor + dz, dz)
+        y, r = x[mobile, axis], a[mobile]
+        phi_sum = phi_sum + np.array(
+            [slab_volume(y, r, e0, e1).sum()
+             for e0, e1 in zip(edges[:-1], edges[1:])]) / (area * dz)
+        k = np.digitize(y, edges) - 1
+        syy = np.zeros(len(edges) - 1)
+        ok = (k >= 0) & (k < len(syy))
+        # symmTensor components xx xy xz yy yz zz
+        np.add.at(syy, k[ok], s[mobile][ok, {1: 3, 2: 5}[axis]])
+        syy_sum = syy_sum + syy / (area * dz)
+        # Velocity along x relative to the affine flow (stored so), by bin
+        u = np.zeros(len(edges) - 1)
+        np.add.at(u, k[ok], read_list(text, "velocity", 3)[mobile][ok, 0])
+        u_sum = u_sum + u
+        n_sum = n_sum + np.bincount(k[ok], minlength=len(u))
+    z = 0.5 * (edges[1:] + edges[:-1]) - edges[0]
+    volume = (4 / 3 * np.pi * np.sum(a[mobile]**3)) / area
+    return dict(sh=sh, component=axis + 1, z=z, dz=dz,
+                phi=phi_sum / len(times),
+                syy=syy_sum / len(times), volume=volume, n=len(times),
+                slip=u_sum / np.maximum(n_sum, 1),
+                t0=times[0][0], t1=times[-1][0])
+
+
+def top_height(z, phi):
+    """First height above the densest bin where phi drops below PHI_TOP."""
+    k0 = int(np.argmax(phi))
+    k = k0 + int(np.argmax(phi[k0:] < PHI_TOP))
+    f = (phi[k - 1] - PHI_TOP) / (phi[k - 1] - phi[k])
+    return z[k - 1] + f * (z[k] - z[k - 1])
+
+
+def centroid(z, phi):
+    return np.trapz(z * phi, z) / np.trapz(phi, z)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("cases", nargs="+")
+    ap.add_argument("--start", type=float, default=None,
+                    help="strain from which to average (default: half the"
+                         " last written strain)")
+    ap.add_argument("--dz", type=float, default=0.5,
+                    help="bin height in a (default 0.5)")
+    ap.add_argument("-o", "--output", default=".")
+    args = ap.parse_args()
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    runs = [read_case(c, args.start, args.dz) for c in args.cases]
+    phim = 0.58
+    comp = runs[0]["component"]
+    if any(r["component"] != comp for r in runs):
+        sys.exit("plotResuspension: the cases differ in the gravity direction")
+    lines = ["# Viscous resuspension along the "
+             + ("velocity gradient" if comp == 2 else "vorticity")
+             + f" (normal viscosity eta_{comp}{comp})",
+             "",
+             f"Heights in a above the floor spheres; h0 = V/phi_m with"
+             f" phi_m = {phim}; model: steady SBM (eq 3) for the same"
+             f" particle volume V per floor area; top where phi = {PHI_TOP}.",
+             "",
+             "| Sh | A | strains | V | h_top DEM | centroid DEM |"
+             + "".join(f" h_top {n} | centroid {n} |" for n in sbm.CLOSURES),
+             "|---" * (6 + 2 * len(sbm.CLOSURES)) + "|"]
+    fig, ax = plt.subplots(1, 4, figsize=(19, 5))
+    balance_err = []
+    for r in runs:
+        h0 = r["volume"] / phim
+        acrivos = 4.5 * r["sh"] / h0
+        row = (f"| {r['sh']:g} | {acrivos:.3f} | {r['t0']:g}-{r['t1']:g}"
+               f" | {r['volume']:.2f} | {top_height(r['z'], r['phi']):.2f}"
+               f" | {centroid(r['z'], r['phi']):.2f} |")
+        line, = ax[0].plot(r["phi"], r["z"], "o", ms=3,
+                           label=f"DEM Sh = {r['sh']:g}")
+        for (name, eta), style in zip(sbm.CLOSURES.items(),
+                                      ("-", "--", ":", "-.")):
+            zm, pm, _ = sbm.resuspension_profile(eta, r["sh"], r["volume"],
+                                                 r["component"])
+            row += (f" {top_height(zm, pm):.2f} | {centroid(zm, pm):.2f} |")
+            ax[0].plot(pm, zm, style, color=line.get_color(), lw=1,
+                       label=f"SBM {name}" if r is runs[0] else None)
+        lines.append(row)
+
+        # Momentum balance: binned stress against the weight above
+        weight = sbm.normal_viscosity_from_profile(r["z"], r["phi"], r["sh"])
+        # The binned virial puts each sphere's stresslet at its centre:
+        # average it over 2 a (a sphere's extent) before comparing
+        n = max(1, int(round(2 / r["dz"])))
+        stress = np.convolve(-r["syy"], np.ones(n) / n, mode="same")
+        bulk = (r["z"] > 2) & (r["z"] < top_height(r["z"], r["phi"]) - 2)
+        err = np.abs(stress[bulk] - weight[bulk]).max() / weight[bulk].max()
+        balance_err.append((r["sh"], err, weight[bulk].max()))
+        ax[1].plot(weight, r["z"], "-", color=line.get_color(),
+                   label=f"weight above z, Sh = {r['sh']:g}")
+        ax[1].plot(stress, r["z"], "o", ms=3, color=line.get_color(),
+                   label=f"-sigma_{comp}{comp} stresslets, Sh = {r['sh']:g}")
+
+        occupied = r["phi"] > 0.05
+        ax[3].plot(r["slip"][occupied], r["z"][occupied], "o-", ms=3,
+                   color=line.get_color(), label=f"Sh = {r['sh']:g}")
+
+        keep = bulk & (r["phi"] > 0.3 * phim) & (
+            r["z"] < top_height(r["z"], r["phi"]) - 5)
+        ax[2].semilogy(r["phi"][keep] / phim, weight[keep], "o", ms=4,
+                       color=line.get_color(),
+                       label=f"DEM profile (eq 6), Sh = {r['sh']:g}")
+
+    phis = np.linspace(0.15, 0.98, 200) * phim
+    for (name, eta), style in zip(sbm.CLOSURES.items(), ("-", "--", ":", "-.")):
+        ax[2].semilogy(phis / phim, eta(phis, comp), "k" + style, lw=1,
+                       label=name)
+    lines += ["", "Momentum balance (bulk, 2 a from the floor and the top):"
+              f" max |-sigma_{comp}{comp} (stresslets, 2 a average) - weight"
+              " above| / max weight", ""]
+    lines += [f"- Sh {sh:g}: {100 * e:.1f} % of {w:.2f} eta gammaDot"
+              for sh, e, w in balance_err]
+    ax[0].set(xlabel="phi", ylabel="z/a", title="volume fraction")
+    ax[1].set(xlabel="stress / (eta gammaDot)", ylabel="z/a",
+              title="momentum balance")
+    ax[2].set(xlabel="phi/phi_m", ylabel=f"eta_{comp}{comp}", ylim=(1e-3, 1e3),
+              title="normal viscosity from the profile (eq 6)")
+    ax[3].set(xlabel="<u_x> - gammaDot y  (a gammaDot)", ylabel="z/a",
+              title="particle velocity against the imposed shear")
+    for a in ax:
+        a.legend(fontsize=7)
+    fig.tight_layout()
+    os.makedirs(args.output, exist_ok=True)
+    png = os.path.join(args.output, "resuspension.png")
+    fig.savefig(png, dpi=120)
+    lines += ["", f"Plot: {png}"]
+    write_markdown(os.path.join(args.output, "resuspension.md"), lines)
+
+
+if __name__ == "__main__":
+    main()
