@@ -56,6 +56,7 @@ def read_case(case, start, dz):
     with open(os.path.join(case, "constant", "particleProperties")) as f:
         props = f.read()
     sh = number(props, "shieldsNumber")
+    gamma = number(props, "shearRate")
     lo, hi = vector(props, "min"), vector(props, "max")
     axis = "xyz".index(re.search(r"\bopen\s+\(\s*(\w)\s*\)", props).group(1))
     span = hi - lo
@@ -99,11 +100,23 @@ def read_case(case, start, dz):
         n_sum = n_sum + np.bincount(k[ok], minlength=len(u))
     z = 0.5 * (edges[1:] + edges[:-1]) - edges[0]
     volume = (4 / 3 * np.pi * np.sum(a[mobile]**3)) / area
-    return dict(sh=sh, component=axis + 1, z=z, dz=dz,
+    return dict(sh=sh, gamma=gamma, component=axis + 1, z=z, dz=dz,
                 phi=phi_sum / len(times),
                 syy=syy_sum / len(times), volume=volume, n=len(times),
                 slip=u_sum / np.maximum(n_sum, 1),
                 t0=times[0][0], t1=times[-1][0])
+
+
+def bulk_shear_rate(r):
+    """Shear rate of the bed: gammaDot (1 + d<u'_x>/dz) by least squares
+    over the bins with phi > 0.1 between 2 a above the floor and 2 a below
+    the top (spec D.2 assumes it uniform and equal to the imposed one)."""
+    z, phi = r["z"], r["phi"]
+    keep = (phi > 0.1) & (z > 2) & (z < top_height(z, phi) - 2)
+    if r["component"] != 2 or keep.sum() < 3:
+        return r["gamma"]     # Lees-Edwards across y imposes it exactly
+    slope = np.polyfit(z[keep], r["slip"][keep], 1)[0]
+    return r["gamma"] * (1 + slope)
 
 
 def top_height(z, phi):
@@ -146,22 +159,30 @@ def main():
              f" phi_m = {phim}; model: steady SBM (eq 3) for the same"
              f" particle volume V per floor area; top where phi = {PHI_TOP}.",
              "",
-             "| Sh | A | strains | V | h_top DEM | centroid DEM |"
+             "The bed's shear rate is measured (slope of the particle"
+             " velocity); the model and eq 6 use the Shields number at that"
+             " rate, Sh_eff = Sh gammaDot_bed/gammaDot.",
+             "",
+             "| Sh | gammaDot_bed/gammaDot | Sh_eff | A | strains | V |"
+             " h_top DEM | centroid DEM |"
              + "".join(f" h_top {n} | centroid {n} |" for n in sbm.CLOSURES),
-             "|---" * (6 + 2 * len(sbm.CLOSURES)) + "|"]
+             "|---" * (8 + 2 * len(sbm.CLOSURES)) + "|"]
     fig, ax = plt.subplots(1, 4, figsize=(19, 5))
     balance_err = []
     for r in runs:
         h0 = r["volume"] / phim
-        acrivos = 4.5 * r["sh"] / h0
-        row = (f"| {r['sh']:g} | {acrivos:.3f} | {r['t0']:g}-{r['t1']:g}"
+        rate = bulk_shear_rate(r) / r["gamma"]
+        sh = r["sh"] * rate
+        acrivos = 4.5 * sh / h0
+        row = (f"| {r['sh']:g} | {rate:.3f} | {sh:.3f} | {acrivos:.3f}"
+               f" | {r['t0']:g}-{r['t1']:g}"
                f" | {r['volume']:.2f} | {top_height(r['z'], r['phi']):.2f}"
                f" | {centroid(r['z'], r['phi']):.2f} |")
         line, = ax[0].plot(r["phi"], r["z"], "o", ms=3,
                            label=f"DEM Sh = {r['sh']:g}")
         for (name, eta), style in zip(sbm.CLOSURES.items(),
                                       ("-", "--", ":", "-.")):
-            zm, pm, _ = sbm.resuspension_profile(eta, r["sh"], r["volume"],
+            zm, pm, _ = sbm.resuspension_profile(eta, sh, r["volume"],
                                                  r["component"])
             row += (f" {top_height(zm, pm):.2f} | {centroid(zm, pm):.2f} |")
             ax[0].plot(pm, zm, style, color=line.get_color(), lw=1,
@@ -169,6 +190,8 @@ def main():
         lines.append(row)
 
         # Momentum balance: binned stress against the weight above
+        # Weight above z over eta gammaDot (imposed): the momentum balance;
+        # over eta gammaDot_bed: eta_ii (eq 6)
         weight = sbm.normal_viscosity_from_profile(r["z"], r["phi"], r["sh"])
         # The binned virial puts each sphere's stresslet at its centre:
         # average it over 2 a (a sphere's extent) before comparing
@@ -188,7 +211,7 @@ def main():
 
         keep = bulk & (r["phi"] > 0.3 * phim) & (
             r["z"] < top_height(r["z"], r["phi"]) - 5)
-        ax[2].semilogy(r["phi"][keep] / phim, weight[keep], "o", ms=4,
+        ax[2].semilogy(r["phi"][keep] / phim, weight[keep] / rate, "o", ms=4,
                        color=line.get_color(),
                        label=f"DEM profile (eq 6), Sh = {r['sh']:g}")
 

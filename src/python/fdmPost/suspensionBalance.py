@@ -148,3 +148,29 @@ def poiseuille_profile(sigma22, phi_mean, phi_j, y_max=0.5, n=401):
     lo, hi = 1e-12 * top, top * y_max
     c = optimize.brentq(excess, lo, hi)
     return y, profile(c), c
+
+
+def poiseuille_velocity(y, phi, eta_s):
+    """u*(y*) of eq F.8a, du*/dy* = -4 y*/eta_s(phi(y*)), no slip at the
+    wall y* = y[-1] (y from the centre plane, in channel widths, velocity
+    in gammaDot_0 L_y); zero shear rate where eta_s is infinite (plug)."""
+    y = np.asarray(y, float)
+    with np.errstate(divide="ignore"):
+        rate = np.where(np.isfinite(eta_s(phi)), 4 * y / eta_s(phi), 0.0)
+    seg = 0.5 * (rate[1:] + rate[:-1]) * np.diff(y)
+    return np.r_[np.cumsum(seg[::-1])[::-1], 0.0]
+
+
+def morris_boulay_poiseuille(phi_j, kn=0.75, ks=0.1, l2=0.8):
+    """Morris & Boulay (1999) closures with phi_m = phi_J: relative shear
+    viscosity eta_s(phi) and the normal-to-shear stress ratio
+    Sigma_22(phi) = l2 eta_n/eta_s that appendix F needs (its Badia et al.
+    2022 fits are not in the thesis)."""
+    def eta_s(phi):
+        r = np.minimum(np.asarray(phi, float) / phi_j, 1 - 1e-12)
+        return 1 + 2.5 * phi / (1 - r) + ks * r**2 / (1 - r)**2
+
+    def sigma22(phi):
+        r = np.minimum(np.asarray(phi, float) / phi_j, 1 - 1e-12)
+        return l2 * kn * r**2 / (1 - r)**2 / eta_s(phi)
+    return eta_s, sigma22

@@ -88,6 +88,22 @@ class Poiseuille(unittest.TestCase):
         self.assertLess(np.abs(phi[outside] - c / y[outside]).max(), 1e-9)
         self.assertTrue(np.all(phi[~outside] == phij))
 
+    def test_newtonian_velocity_is_the_parabola(self):
+        # eta_s = 1: u* = 2 (1/4 - y*^2), centre 0.5 (eq F.8a)
+        y = np.linspace(0, 0.5, 2001)
+        u = sbm.poiseuille_velocity(y, np.zeros_like(y),
+                                    lambda p: np.ones_like(p))
+        self.assertLess(np.abs(u - 2 * (0.25 - y**2)).max(), 1e-7)
+
+    def test_plug_does_not_shear(self):
+        eta_s, sigma22 = sbm.morris_boulay_poiseuille(0.592)
+        y, phi, _ = sbm.poiseuille_profile(sigma22, 0.5, 0.592)
+        u = sbm.poiseuille_velocity(y, phi, eta_s)
+        plug = phi >= 0.592
+        self.assertGreater(plug.sum(), 3)
+        self.assertLess(np.ptp(u[plug]) / u[0], 1e-6)
+        self.assertAlmostEqual(np.trapz(phi, y) / 0.5, 0.5, delta=1e-3)
+
 
 if __name__ == "__main__":
     unittest.main()
