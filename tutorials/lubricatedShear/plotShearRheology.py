@@ -19,8 +19,8 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from fdmPost.demRheology import (PARTS, averages, model_eta, model_mu,  # noqa: E402
-                                 phi_m)
+from fdmPost.demRheology import (PARTS, averages, model_eta, model_lambda33,  # noqa: E402
+                                 model_mu, phi_m)
 
 
 def main():
@@ -45,6 +45,9 @@ def main():
     print("mu     %.4f at I_v %.4g   model eq 14 at that I_v: %.4f"
           % (a["mu"], a["Iv"], model_mu(a["Iv"], phim)))
     print("N1/sigma_xy %.3f  N2/sigma_xy %.3f" % (a["N1"], a["N2"]))
+    l7, l8 = model_lambda33(a["phi"])
+    print("lambda_11 %.3f  lambda_33 %.3f   model eq 7: %.3f, eq 8: %.3f"
+          % (a["lambda11"], a["lambda33"], l7, l8))
     print("share of sigma_xy: " + ", ".join(
         "%s %.3f" % (n, a["share"][n]) for n in PARTS))
     print("contacts (mean) %.0f" % a["contacts"])

@@ -13,6 +13,7 @@ import os
 import numpy as np
 
 from fdmPost.rheology import block_mean
+from fdmPost.suspensionBalance import PHI_RCP, lambda33
 
 PARTS = ("normalContact", "shearContact", "normalLubrication",
          "shearLubrication")
@@ -43,6 +44,12 @@ def model_eta(phi, phim):
     return MU1 / x + (MU2 - MU1) / (x + I0) + (1 - phi) ** -INTRINSIC
 
 
+def model_lambda33(phi, phi_rcp=PHI_RCP):
+    """lambda_33 = sigma_33/sigma_22 of article 3: the linear fit (eq 7)
+    and the smooth one (eq 8), independent of friction (spec C.6)."""
+    return 2.1 * (np.asarray(phi, float) - phi_rcp) + 1, lambda33(phi)
+
+
 def read_series(case):
     """Concatenate the stress.dat files of a case (restarts in time order)."""
     files = sorted(glob.glob(os.path.join(
@@ -62,7 +69,8 @@ def read_series(case):
 
 def averages(case, start_strain, blocks=5):
     """Time averages after start_strain with block standard errors: eta_r,
-    mu = sigma_xy/P, P = -sigma_yy, N1/sigma_xy, N2/sigma_xy, the share of
+    mu = sigma_xy/P, P = -sigma_yy, N1/sigma_xy, N2/sigma_xy, lambda_11,
+    lambda_33, the share of
     each part in sigma_xy, phi, contacts per particle pair list."""
     d, eta, rate = read_series(case)
     d = d[d[:, 1] >= start_strain]
@@ -84,6 +92,10 @@ def averages(case, start_strain, blocks=5):
     out["mu"] = xy / P
     out["N1"] = block_mean((s["xx"] - s["yy"]) / scale, blocks)[0] / xy
     out["N2"] = block_mean((s["yy"] - s["zz"]) / scale, blocks)[0] / xy
+    # Normal stress ratios of article 3 (spec C.6): lambda_11 = s11/s22,
+    # lambda_33 = s33/s22
+    out["lambda11"] = block_mean(-s["xx"] / scale, blocks)[0] / P
+    out["lambda33"] = block_mean(-s["zz"] / scale, blocks)[0] / P
     out["Iv"] = 1 / P
     out["share"] = {n: part_xy[n].mean() / (scale * xy) for n in PARTS}
     out["contacts"] = d[:, 4].mean()
