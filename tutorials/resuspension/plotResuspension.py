@@ -12,7 +12,8 @@ Printed and written to resuspension.md, with resuspension.png:
     centroid of the profile, against the SBM prediction of each closure
     (fdmPost.suspensionBalance) for the same particle volume;
   - the momentum balance: -sigma_ii(z)/(eta gammaDot) from the stresslets
-    against the weight above z, (1/Sh) int_z phi (eq 6);
+    against the load above z: the weight (1/Sh) int_z phi (eq 6) plus the
+    drag on spheres moving up while the bed still expands;
   - eta_ii(phi) recovered from the profile (eq 6) against eq 9, Boyer and
     Zarraga, in the bulk (phi/phi_m >= 0.3, more than 5 a below the top,
     as the thesis discards the interface, spec D.6).
@@ -57,6 +58,9 @@ def read_case(case, start, dz):
         props = f.read()
     sh = number(props, "shieldsNumber")
     gamma = number(props, "shearRate")
+    eta = number(props[props.index("lubricatedContact"):], "viscosity")
+    drag = props[props.index("drag"):] if re.search(r"^drag\b", props, re.M) else ""
+    eta_drag = number(drag, "viscosity") if drag else 0.0
     lo, hi = vector(props, "min"), vector(props, "max")
     axis = "xyz".index(re.search(r"\bopen\s+\(\s*(\w)\s*\)", props).group(1))
     span = hi - lo
@@ -69,7 +73,7 @@ def read_case(case, start, dz):
     if not times:
         sys.exit(f"plotResuspension: no particleState at strain >= {start}"
                  f" in {case}")
-    phi_sum, syy_sum, u_sum, n_sum, edges = 0, 0, 0, 0, None
+    phi_sum, syy_sum, u_sum, n_sum, drag_sum, edges = 0, 0, 0, 0, 0, None
     for t, path in times:
         with open(path) as f:
             text = f.read()
@@ -94,8 +98,14 @@ def read_case(case, start, dz):
         np.add.at(syy, k[ok], s[mobile][ok, {1: 3, 2: 5}[axis]])
         syy_sum = syy_sum + syy / (area * dz)
         # Velocity along x relative to the affine flow (stored so), by bin
+        v = read_list(text, "velocity", 3)[mobile]
         u = np.zeros(len(edges) - 1)
-        np.add.at(u, k[ok], read_list(text, "velocity", 3)[mobile][ok, 0])
+        np.add.at(u, k[ok], v[ok, 0])
+        # Downward load of the drag on spheres moving up (a bed still
+        # expanding), 6 pi eta_d a v_z per volume, in eta gammaDot/a
+        dragLoad = np.zeros(len(edges) - 1)
+        np.add.at(dragLoad, k[ok], 6 * np.pi * eta_drag * r[ok] * v[ok, axis])
+        drag_sum = drag_sum + dragLoad / (area * dz * eta * gamma)
         u_sum = u_sum + u
         n_sum = n_sum + np.bincount(k[ok], minlength=len(u))
     z = 0.5 * (edges[1:] + edges[:-1]) - edges[0]
@@ -104,6 +114,7 @@ def read_case(case, start, dz):
                 phi=phi_sum / len(times),
                 syy=syy_sum / len(times), volume=volume, n=len(times),
                 slip=u_sum / np.maximum(n_sum, 1),
+                drag=drag_sum / len(times),
                 t0=times[0][0], t1=times[-1][0])
 
 
@@ -193,15 +204,18 @@ def main():
         # Weight above z over eta gammaDot (imposed): the momentum balance;
         # over eta gammaDot_bed: eta_ii (eq 6)
         weight = sbm.normal_viscosity_from_profile(r["z"], r["phi"], r["sh"])
+        drag = np.r_[np.cumsum((r["drag"] * r["dz"])[::-1])[::-1][1:], 0.0]
+        load = weight + drag
         # The binned virial puts each sphere's stresslet at its centre:
         # average it over 2 a (a sphere's extent) before comparing
         n = max(1, int(round(2 / r["dz"])))
         stress = np.convolve(-r["syy"], np.ones(n) / n, mode="same")
         bulk = (r["z"] > 2) & (r["z"] < top_height(r["z"], r["phi"]) - 2)
-        err = np.abs(stress[bulk] - weight[bulk]).max() / weight[bulk].max()
-        balance_err.append((r["sh"], err, weight[bulk].max()))
-        ax[1].plot(weight, r["z"], "-", color=line.get_color(),
-                   label=f"weight above z, Sh = {r['sh']:g}")
+        err = np.abs(stress[bulk] - load[bulk]).max() / load[bulk].max()
+        balance_err.append((r["sh"], err, load[bulk].max(),
+                            np.abs(drag[bulk]).max() / load[bulk].max()))
+        ax[1].plot(load, r["z"], "-", color=line.get_color(),
+                   label=f"weight + drag above z, Sh = {r['sh']:g}")
         ax[1].plot(stress, r["z"], "o", ms=3, color=line.get_color(),
                    label=f"-sigma_{comp}{comp} stresslets, Sh = {r['sh']:g}")
 
@@ -220,10 +234,12 @@ def main():
         ax[2].semilogy(phis / phim, eta(phis, comp), "k" + style, lw=1,
                        label=name)
     lines += ["", "Momentum balance (bulk, 2 a from the floor and the top):"
-              f" max |-sigma_{comp}{comp} (stresslets, 2 a average) - weight"
-              " above| / max weight", ""]
-    lines += [f"- Sh {sh:g}: {100 * e:.1f} % of {w:.2f} eta gammaDot"
-              for sh, e, w in balance_err]
+              f" max |-sigma_{comp}{comp} (stresslets, 2 a average) - load"
+              " above| / max load; the load is the weight plus the drag on"
+              " spheres still moving up", ""]
+    lines += [f"- Sh {sh:g}: {100 * e:.1f} % of {w:.2f} eta gammaDot (drag"
+              f" {100 * d:.1f} % of the load)"
+              for sh, e, w, d in balance_err]
     ax[0].set(xlabel="phi", ylabel="z/a", title="volume fraction")
     ax[1].set(xlabel="stress / (eta gammaDot)", ylabel="z/a",
               title="momentum balance")

@@ -177,6 +177,31 @@ def _plane_offsets(pts, p, box, plane):
     return d
 
 
+def row_layer(box, axis, side, radius, gap=0.01):
+    """A floor of straight rows along x on the wall normal to axis (y or
+    z): as many spheres per row and rows as fit at clearance gap, evenly
+    spaced (s_x, s_r).  Every point of the plane lies within
+    sqrt(s_x^2 + s_r^2)/2 of a centre whatever the rows' shifts along x,
+    which must stay below 2a: no sphere of radius a passes even when the
+    rows slide past each other (a floor carried by a shear along x across
+    the rows: gravity along the vorticity)."""
+    other = 3 - axis                      # the in-plane direction besides x
+    n = [int(box.span[k] // (2 * radius * (1 + gap))) for k in (0, other)]
+    sx, sr = box.span[0] / max(n[0], 1), box.span[other] / max(n[1], 1)
+    if min(n) < 1 or np.hypot(sx, sr) / 2 >= 2 * radius:
+        raise RuntimeError(f"no row floor closes a wall of {box.span[0]} x"
+                           f" {box.span[other]} for radius {radius}")
+    gx, gr = np.meshgrid(box.lo[0] + (np.arange(n[0]) + 0.5) * sx,
+                         box.lo[other] + (np.arange(n[1]) + 0.5) * sr,
+                         indexing="ij")
+    x = np.zeros((n[0] * n[1], 3))
+    x[:, 0], x[:, other] = gx.ravel(), gr.ravel()
+    height = radius * (1 + gap)
+    x[:, axis] = (box.lo[axis] + height if side == "lower"
+                  else box.lo[axis] + box.span[axis] - height)
+    return x
+
+
 def wall_layer(box, axis, side, radius, coverage, seed=1, gap=0.01,
                jammed=False):
     """Spheres touching (at clearance gap) the wall normal to axis on side

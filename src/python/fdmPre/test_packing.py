@@ -7,6 +7,7 @@ import unittest
 import numpy as np
 
 from fdmPre.packing import (Box, bidisperse_counts, min_clearance, pack,
+                            row_layer,
                             volume_fraction, wall_layer)
 
 
@@ -67,6 +68,20 @@ class Packing(unittest.TestCase):
         self.assertLess(np.sqrt((d**2).sum(-1)).min(1).max(), 2.0)
         coverage = len(floor) * np.pi / (self.box.span[0] * self.box.span[2])
         self.assertGreater(coverage, 0.45)   # near the RSA jamming 0.547
+
+    def test_row_floor_stays_closed_when_sheared(self):
+        # Rows along x slid by arbitrary shifts: no plane point 2a or more
+        # from every centre (12 a: 5 x 5 at 2.4 a, bound 1.70 a)
+        box = Box([0, 0, 0], [12, 12, 20], [True, True, False])
+        floor = row_layer(box, 2, "lower", 1.0)
+        rng = np.random.default_rng(1)
+        probes = rng.random((5000, 2)) * 12
+        for shift in (0.0, 0.37, 1.2, 2.1):
+            x = floor[:, :2].copy()
+            x[:, 0] += shift * x[:, 1]     # rows carried at gammaDot y t
+            d = probes[:, None, :] - x[None, :, :]
+            d -= 12 * np.round(d / 12)
+            self.assertLess(np.sqrt((d**2).sum(-1)).min(1).max(), 1.71)
 
     def test_impossible_fraction_is_reported(self):
         r = np.ones(200)   # phi = 1.6 in the 8^3 box
