@@ -36,6 +36,7 @@ from fdmPost.particleCase import read_list  # noqa: E402
 from fdmPost.rheology import slab_volume  # noqa: E402
 from fdmPost.report import write_markdown  # noqa: E402
 from fdmPost import suspensionBalance as sbm  # noqa: E402
+from fdmPost.demRheology import averages  # noqa: E402
 
 PHI_TOP = 0.05
 
@@ -150,6 +151,12 @@ def main():
                          " last written strain)")
     ap.add_argument("--dz", type=float, default=0.5,
                     help="bin height in a (default 0.5)")
+    ap.add_argument("--shear", nargs="*", default=[], metavar="CASE",
+                    help="homogeneous simple-shear runs (lubricatedDEMFoam,"
+                         " tri-periodic, same contact model) whose eta_ii ="
+                         " -sigma_ii/(eta gammaDot), averaged after strain 2,"
+                         " are drawn over the resuspension values (article 3,"
+                         " figure 8)")
     ap.add_argument("-o", "--output", default=".")
     args = ap.parse_args()
 
@@ -179,7 +186,7 @@ def main():
              + "".join(f" h_top {n} | centroid {n} |" for n in sbm.CLOSURES),
              "|---" * (8 + 2 * len(sbm.CLOSURES)) + "|"]
     fig, ax = plt.subplots(1, 4, figsize=(19, 5))
-    balance_err = []
+    balance_err, eta_bins = [], []
     for r in runs:
         h0 = r["volume"] / phim
         rate = bulk_shear_rate(r) / r["gamma"]
@@ -225,10 +232,32 @@ def main():
 
         keep = bulk & (r["phi"] > 0.3 * phim) & (
             r["z"] < top_height(r["z"], r["phi"]) - 5)
+        # eta_ii of the profile, binned by phi/phi_m (width 0.05)
+        x, y = r["phi"][keep] / phim, weight[keep] / rate
+        bins = np.round(x / 0.05) * 0.05
+        eta_bins.append((r["sh"], [(b, np.median(y[bins == b]), int((bins == b).sum()))
+                                   for b in np.unique(bins)]))
         ax[2].semilogy(r["phi"][keep] / phim, weight[keep] / rate, "o", ms=4,
                        color=line.get_color(),
                        label=f"DEM profile (eq 6), Sh = {r['sh']:g}")
 
+    lines += ["", f"eta_{comp}{comp} from the profiles (eq 6 at Sh_eff, bulk),"
+              " median per phi/phi_m bin of 0.05 (samples):", ""]
+    for sh, rows in eta_bins:
+        lines.append(f"- Sh {sh:g}: " + ", ".join(
+            f"{b:.2f}: {v:.3g} ({n})" for b, v, n in rows))
+    if args.shear:
+        lines += ["", f"Homogeneous simple shear (eta_{comp}{comp} ="
+                  f" -sigma_{comp}{comp}/(eta gammaDot), strain 2 on):", ""]
+    for case in args.shear:
+        a = averages(case, 2.0)[0]
+        value = a["P"][0] * (1 if comp == 2 else a["lambda33"])
+        ax[2].semilogy(a["phi"] / phim, value, "ks", ms=7,
+                       label="homogeneous shear" if case == args.shear[0]
+                       else None)
+        lines.append(f"- phi {a['phi']:.3f} (phi/phi_m {a['phi'] / phim:.3f}):"
+                     f" eta_{comp}{comp} {value:.3g}; article 3 (eqs 8-9)"
+                     f" {float(sbm.chevremont(a['phi'], comp)):.3g}")
     phis = np.linspace(0.15, 0.98, 200) * phim
     for (name, eta), style in zip(sbm.CLOSURES.items(), ("-", "--", ":", "-.")):
         ax[2].semilogy(phis / phim, eta(phis, comp), "k" + style, lw=1,

@@ -235,6 +235,12 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
     {
         const label i = pairs_[k].first();
         const label j = pairs_[k].second();
+        if (!mobile_[i] && !mobile_[j])
+        {
+            // Two floor spheres: their loads move nothing (and rows of a
+            // sheared floor slide past each other)
+            continue;
+        }
         const vector l = box_.minimumImage(position_[j] - position_[i]);
         const scalar dist = mag(l);
         const scalar a = 0.5*(radius_[i] + radius_[j]);
