@@ -29,8 +29,8 @@ Description
     }
     drag                            // Stokes drag against the affine flow
     {
-        viscosity           0;      // on every particle (spec B.2: eta_f;
-                                    // resuspension along y: eta_f/30)
+        viscosity           0;      // on every particle (spec B.2 and
+                                    // resuspension along y: eta_f)
         isolatedViscosity   0;      // extra, on particles with fewer than
         isolatedBelow       3;      // isolatedBelow interactions (D.1)
     }
