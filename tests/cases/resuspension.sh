@@ -55,6 +55,8 @@ sed -i -e 's/^    max .*/    max         (12 17 12);/' \
     -e 's/^    direction .*/    direction       (0 1 0);/' \
     -e 's/^    shieldsNumber .*/    shieldsNumber   0.01;/' \
     "$work/escape/constant/particleProperties"
+foamDictionary -entry drag/viscosity -set 0 \
+    "$work/escape/constant/particleProperties" > /dev/null
 expectFailure "$work/escape" "left the cell through its open direction y" || exit 1
 
 "$FDM_PYTHON" - "$work/run" <<'PY'

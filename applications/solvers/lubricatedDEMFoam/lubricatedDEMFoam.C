@@ -44,6 +44,12 @@ Description
         // value        (0 -400 0); // or the acceleration itself
     }
     fluidDensity    0;              // rho_f (buoyancy)
+    pressureWall                    // optional: imposed particle pressure
+    {
+        group       attachedUpper;  // fixed spheres moving together along
+        pressure    10;             // the open direction at
+        damping     1e4;            // v_w = (F - P A)/damping
+    }
     lubricatedContact { ... }       // see lubricatedContact.H
     output
     {

@@ -428,3 +428,52 @@ TEST(lubricatedDEM, floorCarriesTheWeightOfAPile)
     EXPECT_LT(mag(floorForce - weight)/mag(weight), 1e-4);
 
 }
+
+
+TEST(lubricatedDEM, pressureWallCarriesTheImposedPressure)
+{
+    // Spheres on a floor under a wall of fixed spheres free to move along
+    // y at zero shear and no gravity: at rest the wall carries P A and the
+    // floor the same load, opposite (the spheres transmit it)
+    const scalar L = 8, P = 2;
+    fdm::lubricatedDEM dem(openY(L, 40), 0,
+        fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-2, 0.5, 1));
+    dem.setDrag(1);
+    labelList floor, wall;
+    for (const scalar x : {1.0, 3.0, 5.0, 7.0})
+    {
+        for (const scalar z : {1.0, 3.0, 5.0, 7.0})
+        {
+            floor.append(dem.addParticle(point(x, 1, z), 1, 1e-2, false));
+            wall.append(dem.addParticle(point(x, 6.6, z), 1, 1e-2, false));
+        }
+    }
+    for (const scalar x : {2.0, 6.0})
+    {
+        for (const scalar z : {2.0, 6.0})
+        {
+            dem.addParticle(point(x, 3.8, z), 1.2, 1e-2);
+        }
+    }
+    dem.setPressureWall(wall, vector::Y, P, 50);
+    for (label i = 0; i < 60000; ++i)
+    {
+        dem.step(2e-4);
+    }
+    const scalar PA = P*L*L;
+    scalar floorLoad = 0, wallLoad = 0;
+    for (const label i : floor)
+    {
+        floorLoad += dem.forces()[i].y();
+    }
+    for (const label i : wall)
+    {
+        wallLoad += dem.forces()[i].y();
+    }
+    EXPECT_LT(mag(dem.wallVelocity()), 1e-8);
+    EXPECT_NEAR(wallLoad/PA, 1, 1e-5);
+    EXPECT_NEAR(dem.wallLoad()/PA, 1, 1e-5);
+    EXPECT_NEAR(-floorLoad/PA, 1, 1e-5);
+    // The wall came down onto the spheres
+    EXPECT_LT(dem.positions()[wall[0]].y(), 6.6 - 0.3);
+}

@@ -125,6 +125,11 @@ Foam::fdm::lubricatedDEM::lubricatedDEM
     dragViscosity_(0),
     isolatedDragViscosity_(0),
     isolatedBelow_(0),
+    wallNormal_(vector::Y),
+    wallPressure_(0),
+    wallDamping_(1),
+    wallLoad_(0),
+    wallVelocity_(0),
     skin_(-1),
     timeSinceSearch_(GREAT),
     nSearches_(0),
@@ -187,6 +192,36 @@ void Foam::fdm::lubricatedDEM::setIsolatedDrag
 {
     isolatedDragViscosity_ = viscosity;
     isolatedBelow_ = minInteractions;
+}
+
+
+void Foam::fdm::lubricatedDEM::setPressureWall
+(
+    const labelList& spheres,
+    const direction normal,
+    const scalar pressure,
+    const scalar damping
+)
+{
+    for (const label i : spheres)
+    {
+        if (i < 0 || i >= size() || mobile_[i])
+        {
+            FatalErrorInFunction
+                << "Pressure wall sphere " << i << " is not a fixed sphere"
+                << abort(FatalError);
+        }
+    }
+    if (box_.periodic(normal) || damping <= 0)
+    {
+        FatalErrorInFunction
+            << "A pressure wall needs an open normal direction and a"
+            << " positive damping" << abort(FatalError);
+    }
+    wall_ = spheres;
+    wallNormal_ = normal;
+    wallPressure_ = pressure;
+    wallDamping_ = damping;
 }
 
 
@@ -329,6 +364,27 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
     }
 
     // Leapfrog with point-implicit drag and viscous torques
+    // Pressure wall: overdamped motion along its normal under the load of
+    // the spheres and the imposed pressure, c v_w = F_n - P A (the servo of
+    // article 2, without its unpublished gains)
+    if (wall_.size())
+    {
+        wallLoad_ = 0;
+        for (const label i : wall_)
+        {
+            wallLoad_ += force_[i][wallNormal_];
+        }
+        const vector& L = box_.span();
+        const scalar area = L.x()*L.y()*L.z()/L[wallNormal_];
+        wallVelocity_ = (wallLoad_ - wallPressure_*area)/wallDamping_;
+        for (const label i : wall_)
+        {
+            velocity_[i][wallNormal_] = wallVelocity_;
+            position_[i][wallNormal_] += dt*wallVelocity_;
+            displacementSinceSearch_[i][wallNormal_] += dt*wallVelocity_;
+        }
+    }
+
     stabilityNumber_ = 0;
     const vector flowSpin(0, 0, -0.5*shearRate_);
     for (label i = 0; i < n; ++i)
