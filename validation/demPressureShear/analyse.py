@@ -25,7 +25,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
 import numpy as np  # noqa: E402
 
 from fdmPost.particleCase import read_list  # noqa: E402
-from fdmPost.rheology import slab_volume  # noqa: E402
+from fdmPost.rheology import number, slab_volume  # noqa: E402
 from fdmPost.demRheology import model_mu, phi_m  # noqa: E402
 from fdmPost.report import write_markdown  # noqa: E402
 
@@ -41,8 +41,8 @@ def main():
     args = ap.parse_args()
 
     props = open(os.path.join(args.case, "constant", "particleProperties")).read()
-    P = float(re.search(r"pressure\s+([-+0-9.eE]+)\s*;", props).group(1))
-    mu_m = float(re.search(r"friction\s+([-+0-9.eE]+)\s*;", props).group(1))
+    P = number(props, "pressure")
+    mu_m = number(props, "friction")
     lo = np.array(re.search(r"\bmin\s+\(([^)]*)\)", props).group(1).split(), float)
     hi = np.array(re.search(r"\bmax\s+\(([^)]*)\)", props).group(1).split(), float)
     area = (hi[0] - lo[0]) * (hi[2] - lo[2])
