@@ -33,17 +33,12 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
 import numpy as np  # noqa: E402
 
 from fdmPost.particleCase import read_list  # noqa: E402
-from fdmPost.rheology import number, slab_volume  # noqa: E402
+from fdmPost.rheology import number, slab_volume, vector  # noqa: E402
 from fdmPost.report import write_markdown  # noqa: E402
 from fdmPost import suspensionBalance as sbm  # noqa: E402
 from fdmPost.demRheology import averages  # noqa: E402
 
 PHI_TOP = 0.05
-
-
-def vector(text, key):
-    m = re.search(r"\b%s\s+\(([^)]*)\)\s*;" % key, text)
-    return np.array(m.group(1).split(), float)
 
 
 def read_case(case, start, dz):

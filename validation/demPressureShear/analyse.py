@@ -25,7 +25,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
 import numpy as np  # noqa: E402
 
 from fdmPost.particleCase import read_list  # noqa: E402
-from fdmPost.rheology import number, slab_volume  # noqa: E402
+from fdmPost.rheology import number, slab_volume, vector  # noqa: E402
 from fdmPost.demRheology import model_mu, phi_m  # noqa: E402
 from fdmPost.report import write_markdown  # noqa: E402
 
@@ -43,8 +43,7 @@ def main():
     props = open(os.path.join(args.case, "constant", "particleProperties")).read()
     P = number(props, "pressure")
     mu_m = number(props, "friction")
-    lo = np.array(re.search(r"\bmin\s+\(([^)]*)\)", props).group(1).split(), float)
-    hi = np.array(re.search(r"\bmax\s+\(([^)]*)\)", props).group(1).split(), float)
+    lo, hi = vector(props, "min"), vector(props, "max")
     area = (hi[0] - lo[0]) * (hi[2] - lo[2])
     groups = re.findall(r"^\((\w+) ", open(os.path.join(
         args.case, "constant", "particleList")).read(), re.M)

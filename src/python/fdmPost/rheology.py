@@ -172,6 +172,12 @@ def number(text, key):
     return float(re.search(rf"^\s*{key}\s+([^;\s]+)\s*;", text, re.M).group(1))
 
 
+def vector(text, key):
+    """The first "key (x y z);" entry of an OpenFOAM dictionary text."""
+    m = re.search(rf"\b{key}\s+\(([^)]*)\)\s*;", text)
+    return np.array(m.group(1).split(), float)
+
+
 def _wall_velocity(text, patch):
     block = text[text.index(patch):]
     return float(re.search(r"uniform\s*\(\s*(\S+)", block).group(1))

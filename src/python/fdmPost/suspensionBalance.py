@@ -37,6 +37,8 @@ import inspect
 import numpy as np
 from scipy import integrate, optimize
 
+from fdmPost.rheology import morris_boulay as morris_boulay_shear
+
 PHI_RCP = 0.64
 
 
@@ -161,16 +163,19 @@ def poiseuille_velocity(y, phi, eta_s):
     return np.r_[np.cumsum(seg[::-1])[::-1], 0.0]
 
 
-def morris_boulay_poiseuille(phi_j, kn=0.75, ks=0.1, l2=0.8):
+def morris_boulay_poiseuille(phi_j):
     """Morris & Boulay (1999) closures with phi_m = phi_J: relative shear
-    viscosity eta_s(phi) and the normal-to-shear stress ratio
-    Sigma_22(phi) = l2 eta_n/eta_s that appendix F needs (its Badia et al.
-    2022 fits are not in the thesis)."""
+    viscosity eta_s(phi) (fdmPost.rheology.morris_boulay) and the
+    normal-to-shear stress ratio Sigma_22(phi) = eta_22/eta_s that
+    appendix F needs (its Badia et al. 2022 fits are not in the thesis);
+    phi is held just below phi_J so that the plug has a finite, huge
+    eta_s."""
+    def below(phi):
+        return np.minimum(np.asarray(phi, float), phi_j * (1 - 1e-12))
+
     def eta_s(phi):
-        r = np.minimum(np.asarray(phi, float) / phi_j, 1 - 1e-12)
-        return 1 + 2.5 * phi / (1 - r) + ks * r**2 / (1 - r)**2
+        return morris_boulay_shear(below(phi), phi_j)[0]
 
     def sigma22(phi):
-        r = np.minimum(np.asarray(phi, float) / phi_j, 1 - 1e-12)
-        return l2 * kn * r**2 / (1 - r)**2 / eta_s(phi)
+        return morris_boulay(below(phi), 2, phi_j) / eta_s(phi)
     return eta_s, sigma22
