@@ -5,6 +5,7 @@
 
 #include "readBounded.H"
 #include "OStringStream.H"
+#include "vector.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -57,6 +58,19 @@ Foam::scalar Foam::fdm::readBoundedOrDefault
 )
 {
     return dict.found(key) ? readBounded(dict, key, lo, hi, meaning) : deflt;
+}
+
+
+Foam::label Foam::fdm::axisIndex(const word& name)
+{
+    for (direction d = 0; d < vector::nComponents; ++d)
+    {
+        if (name == vector::componentNames[d])
+        {
+            return d;
+        }
+    }
+    return -1;
 }
 
 

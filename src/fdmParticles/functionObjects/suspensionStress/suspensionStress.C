@@ -10,6 +10,7 @@
 #include "IOdictionary.H"
 #include "Time.H"
 #include "fvMesh.H"
+#include "readBounded.H"
 
 namespace Foam
 {
@@ -34,12 +35,10 @@ Foam::direction readAxis
 )
 {
     const Foam::word name = dict.getOrDefault<Foam::word>(key, deflt);
-    for (Foam::direction d = 0; d < 3; ++d)
+    const Foam::label d = Foam::fdm::axisIndex(name);
+    if (d >= 0)
     {
-        if (name == Foam::vector::componentNames[d])
-        {
-            return d;
-        }
+        return d;
     }
     FatalIOErrorInFunction(dict)
         << "keyword " << key << " is " << name << "; allowed: x, y, z"
