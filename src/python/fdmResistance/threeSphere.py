@@ -1,9 +1,14 @@
 """Three (or more) equal spheres in Stokes flow: the clusters of thesis 1,
 sections 4.1.5-4.1.6, and their reference velocities.
 
-cluster    sphere centres of the triangle / aligned / L configurations
+cluster         sphere centres of the triangle / aligned / L configurations
+grand_mobility  far-field (Rotne-Prager level) force-torque-stresslet
+                mobility of unit spheres
+velocities      Stokesian dynamics with the exact two-sphere functions:
+                velocities of spheres under forces in a linear flow
 """
 
+import functools
 import math
 
 import numpy as np
@@ -44,6 +49,7 @@ BASIS = np.array([
         [_S2, _S6, _S2, _S2, _S2])[:, None, None]
 
 
+@functools.lru_cache(maxsize=None)
 def _coupling_function():
     """Derive (sympy) the 11 x 11 far-field coupling block between two unit
     spheres (eta = 1) whose centres differ by (x, y, z): velocity, angular
@@ -51,11 +57,13 @@ def _coupling_function():
     (Faxen laws: U = (1 + lap/6) u, Omega = curl u / 2, E = (1 + lap/10)
     sym grad u) caused by a force, torque and stresslet (5 coefficients)
     exerted on the fluid by the sending sphere, whose disturbance is
-    (1 + lap/6) Stokeslet + rotlet + (1 + lap/10) stresslet.  These are the
-    exact fields of an isolated translating, rotating or strained rigid
-    sphere (checked in test_threeSphere), so the block is the Rotne-Prager
-    / Stokesian-dynamics far field (Durlofsky, Brady & Bossis 1987).
-    Returns a numpy function f(x, y, z) -> 11 x 11 array."""
+    (1 + lap/6) Stokeslet + rotlet + (1 + lap/10) stresslet (the exact
+    fields of an isolated translating, rotating or strained rigid sphere),
+    so the block is the Rotne-Prager / Stokesian-dynamics far field
+    (Durlofsky, Brady & Bossis 1987).  test_threeSphere checks it against
+    the exact two-sphere functions (the deviation falls as r^-6 and r^-7).
+    Derived once per process (about 15 s).  Returns a numpy function
+    f(x, y, z) -> 11 x 11 array."""
     import sympy as sp
     X = sp.symbols("x y z", real=True)
     r = sp.Symbol("r", positive=True)       # |x|, differentiated by hand:
@@ -107,13 +115,8 @@ def _coupling_function():
                                                          + z * z)), float)
 
 
-_COUPLING = []
-
-
 def _coupling(dx):
-    if not _COUPLING:
-        _COUPLING.append(_coupling_function())
-    return _COUPLING[0](*dx)
+    return _coupling_function()(*dx)
 
 
 SELF = np.diag([1 / (6 * math.pi)] * 3 + [1 / (8 * math.pi)] * 3
@@ -147,15 +150,21 @@ def _isolated_mobility(x):
     return np.kron(np.eye(len(x)), SELF)
 
 
-def _far_pair(xa, xb, E, far=grand_mobility):
-    """Far-field two-sphere resistance: (R_FU 12 x 12 on (U_a, W_a, U_b,
-    W_b) minus ambient, force and torque from the ambient strain E (12))
-    from the inverse of the two-sphere grand mobility far([xa, xb])."""
-    R = np.linalg.inv(far([xa, xb]))
-    fu = [11 * p + i for p in range(2) for i in range(6)]
-    s = [11 * p + 6 + i for p in range(2) for i in range(5)]
-    e = np.tile(_strain_coefficients(E), 2)
+def _resistance(M, E):
+    """Force and torque rows of the inverse of a grand mobility M (11N x
+    11N): R_FU (6N x 6N, on (U, W) per sphere minus ambient) and the forces
+    and torques (6N) the ambient strain E induces."""
+    n = len(M) // 11
+    R = np.linalg.inv(M)
+    fu = [11 * p + i for p in range(n) for i in range(6)]
+    s = [11 * p + 6 + i for p in range(n) for i in range(5)]
+    e = np.tile(_strain_coefficients(E), n)
     return R[np.ix_(fu, fu)], R[np.ix_(fu, s)] @ e
+
+
+def _far_pair(xa, xb, E, far=grand_mobility):
+    """Far-field two-sphere resistance, layout of _resistance."""
+    return _resistance(far([xa, xb]), E)
 
 
 # pairShear orders (U_a, U_b, W_a, W_b); here (U_a, W_a, U_b, W_b)
@@ -192,11 +201,7 @@ def velocities(x, E=None, W=None, forces=None, torques=None,
     E = np.zeros((3, 3)) if E is None else np.asarray(E, float)
     W = np.zeros(3) if W is None else np.asarray(W, float)
     far = grand_mobility if many_body else _isolated_mobility
-    Rinf = np.linalg.inv(far(x))
-    fu = [11 * p + i for p in range(n) for i in range(6)]
-    s = [11 * p + 6 + i for p in range(n) for i in range(5)]
-    R = Rinf[np.ix_(fu, fu)]
-    b = Rinf[np.ix_(fu, s)] @ np.tile(_strain_coefficients(E), n)
+    R, b = _resistance(far(x), E)
     for a in range(n):
         for c in range(a + 1, n):
             Re, fe = _exact_pair(x[a], x[c], E)
