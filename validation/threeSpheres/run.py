@@ -60,6 +60,19 @@ SHEAR_GAP = 0.01
 SHEAR_BOX = 12.0          # in units of the radius
 
 
+def make_case(case, box, uw, force, particles):
+    """Fill the template in case: box (Lx, Ly, Lz) centred on the origin,
+    walls y = +-Ly/2 moving at -+uw, force of the 'pushed' group, particle
+    lines."""
+    n = [int(round(L / DELTA)) for L in box]
+    fill_template(os.path.join(HERE, "template"), case, {
+        "@LX2@": "%.17g" % (box[0] / 2), "@LY2@": "%.17g" % (box[1] / 2),
+        "@LZ2@": "%.17g" % (box[2] / 2),
+        "@NX@": "%d" % n[0], "@NY@": "%d" % n[1], "@NZ@": "%d" % n[2],
+        "@UW@": "%.17g" % uw, "@FORCE@": vec(force),
+        "@LAMBDATOL@": "1e-6", "@PARTICLES@": particles})
+
+
 def solve(kind, param, radius, offset, work):
     """One steady solve; returns (positions relative to the cluster
     reference point, velocities, angular velocities), the ambient
@@ -79,13 +92,7 @@ def solve(kind, param, radius, offset, work):
                       for g, p in zip(groups, x))
     case = os.path.join(work, "%s_%s_a%g_%s" % (
         kind, param, radius, "_".join("%g" % o for o in offset)))
-    n = [int(round(L / DELTA)) for L in box]
-    fill_template(os.path.join(HERE, "template"), case, {
-        "@LX2@": "%.17g" % (box[0] / 2), "@LY2@": "%.17g" % (box[1] / 2),
-        "@LZ2@": "%.17g" % (box[2] / 2),
-        "@NX@": "%d" % n[0], "@NY@": "%d" % n[1], "@NZ@": "%d" % n[2],
-        "@UW@": "%.17g" % uw, "@FORCE@": vec(force),
-        "@LAMBDATOL@": "1e-6", "@PARTICLES@": lines})
+    make_case(case, box, uw, force, lines)
     s = run_case(case)
     U = s["velocity"].copy()
     if uw:
@@ -95,23 +102,15 @@ def solve(kind, param, radius, offset, work):
 
 def box_kernel(work):
     """Box correction of the triangle runs: sphere 1 alone, pushed, at the
-    cluster's place; returns K (4 x 3): the velocity added by the box
+    cluster's place; returns K (see kernel_from_field): the velocity added by the box
     (walls, images and the net flow a net force drives along a periodic
     channel) at sphere 1 itself (U_single - F/(6 pi)) and at the places of
     spheres 2 and 3 relative to it for each side r (fluid velocity after
     one step minus the exact field of a translating sphere), see
     kernel_from_field (sphere 3 by symmetry y -> -y)."""
     case = os.path.join(work, "boxKernel")
-    box = TRIANGLE_BOX
-    n = [int(round(L / DELTA)) for L in box]
-    x1 = np.array([0.013, 0.013, 0.013])
-    fill_template(os.path.join(HERE, "template"), case, {
-        "@LX2@": "%.17g" % (box[0] / 2), "@LY2@": "%.17g" % (box[1] / 2),
-        "@LZ2@": "%.17g" % (box[2] / 2),
-        "@NX@": "%d" % n[0], "@NY@": "%d" % n[1], "@NZ@": "%d" % n[2],
-        "@UW@": "0", "@FORCE@": vec((6 * np.pi, 0, 0)),
-        "@LAMBDATOL@": "1e-6",
-        "@PARTICLES@": "    (pushed %s 1)" % vec(x1)})
+    make_case(case, TRIANGLE_BOX, 0.0, (6 * np.pi, 0, 0),
+              "    (pushed %s 1)" % vec([0.013, 0.013, 0.013]))
     control = os.path.join(case, "system", "controlDict")
     text = open(control).read()
     text = text.replace("endTime         0;", "endTime         1e-3;")
