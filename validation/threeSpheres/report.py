@@ -35,9 +35,10 @@ from run import TRIANGLE_SIDES  # noqa: E402
 
 TRI_REL, TRI_ABS = 0.03, 0.003
 # Below this side the place of sphere 2 is less than 2 a from sphere 1's
-# surface: there the field of the single-sphere run carries the solver's
-# own near-field error (~0.004, as large as the box part of u_y)
-NEAR_FIELD = 3.0          # ... and sphere 1's box velocity drifts all three
+# surface, where the field of the single-sphere run carries the solver's own
+# near-field error (~0.004, as large as the box part of u_y): there sphere
+# 1's box velocity is applied to all three spheres as a uniform drift
+NEAR_FIELD = 3.0
 SHEAR_MEAN, SHEAR_MAX = 0.02, 0.05
 
 
@@ -92,8 +93,8 @@ def shear_reference(config, many_body=True):
 
 
 def triangle_section(data, kernel, lines):
-    sides = sorted(k[1] for k in data if k[0] == "triangle"
-                   and k[1] != "single")
+    sides = sorted((k[1] for k in data if k[0] == "triangle"
+                    and k[1] != "single"), key=float)
     lines += ["## Triangle, sphere 1 pushed (thesis 4.1.5, Tables 4.2-4.4)",
               "",
               "Units F/(6 pi eta a) (angular: F/(6 pi eta a^2)); mean over "
