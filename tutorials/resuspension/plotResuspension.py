@@ -22,7 +22,6 @@ Printed and written to resuspension.md, with resuspension.png:
 """
 
 import argparse
-import glob
 import os
 import re
 import sys
@@ -32,11 +31,10 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
 
 import numpy as np  # noqa: E402
 
-from fdmPost.particleCase import read_list  # noqa: E402
 from fdmPost.rheology import number, slab_volume, vector  # noqa: E402
 from fdmPost.report import write_markdown  # noqa: E402
 from fdmPost import suspensionBalance as sbm  # noqa: E402
-from fdmPost.demRheology import averages  # noqa: E402
+from fdmPost.demRheology import averages, dem_state, state_files  # noqa: E402
 
 PHI_TOP = 0.05
 
@@ -56,8 +54,7 @@ def read_case(case, start, dz):
     axis = "xyz".index(re.search(r"\bopen\s+\(\s*(\w)\s*\)", props).group(1))
     span = hi - lo
     area = np.prod(span) / span[axis]
-    times = sorted((float(os.path.basename(os.path.dirname(p))), p)
-                   for p in glob.glob(os.path.join(case, "*", "particleState")))
+    times = state_files(case)
     if start is None:
         start = 0.5 * times[-1][0] if times else 0
     times = [(t, p) for t, p in times if t >= start - 1e-6]
@@ -66,14 +63,9 @@ def read_case(case, start, dz):
                  f" in {case}")
     phi_sum, syy_sum, u_sum, n_sum, drag_sum, edges = 0, 0, 0, 0, 0, None
     for t, path in times:
-        with open(path) as f:
-            text = f.read()
-        x = read_list(text, "position", 3)
-        a = read_list(text, "radius", 1)
-        mobile = read_list(text, "mobile", 1) > 0.5
-        s = sum(read_list(text, "stresslet_" + part, 6)
-                for part in ("normalContact", "shearContact",
-                             "normalLubrication", "shearLubrication"))
+        state = dem_state(path)
+        x, a, s = state["position"], state["radius"], state["stresslet"]
+        mobile = state["mobile"]
         floor = np.mean(x[~mobile, axis] + a[~mobile])
         if edges is None:
             top = x[mobile, axis].max() + 4
@@ -89,7 +81,7 @@ def read_case(case, start, dz):
         np.add.at(syy, k[ok], s[mobile][ok, {1: 3, 2: 5}[axis]])
         syy_sum = syy_sum + syy / (area * dz)
         # Velocity along x relative to the affine flow (stored so), by bin
-        v = read_list(text, "velocity", 3)[mobile]
+        v = state["velocity"][mobile]
         u = np.zeros(len(edges) - 1)
         np.add.at(u, k[ok], v[ok, 0])
         # Downward load of the drag on spheres moving up (a bed still
@@ -227,7 +219,7 @@ def main():
         bins = np.round(x / 0.05) * 0.05
         eta_bins.append((r["sh"], [(b, np.median(y[bins == b]), int((bins == b).sum()))
                                    for b in np.unique(bins)]))
-        ax[2].semilogy(r["phi"][keep] / phim, weight[keep] / rate, "o", ms=4,
+        ax[2].semilogy(x, y, "o", ms=4,
                        color=line.get_color(),
                        label=f"DEM profile (eq 6), Sh = {r['sh']:g}")
 

@@ -14,7 +14,6 @@ phi/phi_m = 1/(1 + I_v^1/2) (eq 15) and mu(I_v) (eq 14), phi_m(mu_m)
 """
 
 import argparse
-import glob
 import os
 import re
 import sys
@@ -24,13 +23,10 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.realpath(__file__)),
 
 import numpy as np  # noqa: E402
 
-from fdmPost.particleCase import read_list  # noqa: E402
 from fdmPost.rheology import number, slab_volume, vector  # noqa: E402
-from fdmPost.demRheology import model_mu, phi_m  # noqa: E402
+from fdmPost.demRheology import (dem_state, model_mu, phi_m,  # noqa: E402
+                                 state_files)
 from fdmPost.report import write_markdown  # noqa: E402
-
-PARTS = ("normalContact", "shearContact", "normalLubrication",
-         "shearLubrication")
 
 
 def main():
@@ -50,16 +46,12 @@ def main():
     upper = np.array([g == "attachedUpper" for g in groups])
 
     rows = []
-    for path in glob.glob(os.path.join(args.case, "*", "particleState")):
-        t = float(os.path.basename(os.path.dirname(path)))
+    for t, path in state_files(args.case):
         if t < args.start - 1e-9:
             continue
-        text = open(path).read()
-        x = read_list(text, "position", 3)
-        a = read_list(text, "radius", 1)
-        v = read_list(text, "velocity", 3)
-        mobile = read_list(text, "mobile", 1) > 0.5
-        S = sum(read_list(text, "stresslet_" + p, 6) for p in PARTS)
+        s = dem_state(path)
+        x, a, v, S = s["position"], s["radius"], s["velocity"], s["stresslet"]
+        mobile = s["mobile"]
         floor = x[~mobile & ~upper, 1].mean() + 1
         wall = x[upper, 1].mean() - 1
         c0, c1 = floor + args.layer, wall - args.layer

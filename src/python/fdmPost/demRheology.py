@@ -50,6 +50,31 @@ def model_lambda33(phi, phi_rcp=PHI_RCP):
     return 2.1 * (np.asarray(phi, float) - phi_rcp) + 1, lambda33(phi)
 
 
+STRESSLET_PARTS = ("normalContact", "shearContact", "normalLubrication",
+                   "shearLubrication")
+
+
+def state_files(case):
+    """(time, path) of every <case>/<time>/particleState, in time order."""
+    return sorted((float(os.path.basename(os.path.dirname(p))), p)
+                  for p in glob.glob(os.path.join(case, "*", "particleState")))
+
+
+def dem_state(path):
+    """One lubricatedDEMFoam particleState: position, velocity (relative to
+    the affine flow) N x 3, radius N, mobile N (bool) and stresslet N x 6
+    (xx xy xz yy yz zz), the sum of its contact and lubrication parts."""
+    from .particleCase import read_list
+    with open(path) as f:
+        text = f.read()
+    return {"position": read_list(text, "position", 3),
+            "velocity": read_list(text, "velocity", 3),
+            "radius": read_list(text, "radius", 1),
+            "mobile": read_list(text, "mobile", 1) > 0.5,
+            "stresslet": sum(read_list(text, "stresslet_" + part, 6)
+                             for part in STRESSLET_PARTS)}
+
+
 def read_series(case):
     """Concatenate the stress.dat files of a case (restarts in time order)."""
     files = sorted(glob.glob(os.path.join(

@@ -363,7 +363,6 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
         }
     }
 
-    // Leapfrog with point-implicit drag and viscous torques
     // Pressure wall: overdamped motion along its normal under the load of
     // the spheres and the imposed pressure, c v_w = F_n - P A (the servo of
     // article 2, without its unpublished gains)
@@ -385,6 +384,7 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
         }
     }
 
+    // Leapfrog with point-implicit drag and viscous torques
     stabilityNumber_ = 0;
     const vector flowSpin(0, 0, -0.5*shearRate_);
     for (label i = 0; i < n; ++i)
