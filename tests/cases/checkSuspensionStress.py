@@ -5,7 +5,8 @@ Reference: fdmPost.rheology, an independent (Python) implementation of the
 same equations (thesis 1, eqs 2.70, 2.71, 2.73, 6.4; core shear rate by
 regression), applied to the HDF5 record of the same time.  Both are
 written with 17 digits (the case's writePrecision), so they must agree to
-round-off (1e-10 relative).  Also: the profiles
+round-off (1e-10 relative), also the stress profiles (eqs 6.18-6.19,
+particle stresslets spread over the particle volumes).  Also: the profiles
 hold the particle volume (eq 2.70 integrated), the postProcess pass
 writes the same rows as the run, and the restarted run the same as the
 straight one.
@@ -71,6 +72,12 @@ for row in run:
     occupied = phi > 0
     check("t = %g: u_p(y) vs fdmPost" % t,
           rel(prof[occupied, 2], up[occupied]), 1e-10)
+    hp_y, c_y = cs.stress_profiles(BINS, [k])
+    upper = np.triu_indices(3)
+    check("t = %g: Sigma^hp(y) vs fdmPost" % t,
+          rel(prof[:, 5:11], hp_y[:, upper[0], upper[1]]), 1e-10)
+    check("t = %g: Sigma^c(y) vs fdmPost" % t,
+          rel(prof[:, 11:17], c_y[:, upper[0], upper[1]]), 1e-10)
     volume = (4 / 3 * np.pi * cs.a ** 3).sum()
     check("t = %g: profile volume / particle volume - 1" % t,
           abs(prof[:, 1].sum() * SPAN[0] * SPAN[2] * SPAN[1] / BINS / volume

@@ -91,6 +91,29 @@ class CouetteSeries:
         up = np.where(vol > 0, mom / np.maximum(vol, 1e-300), np.nan)
         return 0.5 * (edges[1:] + edges[:-1]), phi, up
 
+    def stress_profiles(self, bins, steps):
+        """Sigma^hp(y) and Sigma^c(y) (eqs 6.18-6.19, without the fluid
+        terms): each particle's stresslet spread uniformly over its volume
+        and averaged over the bins, then over the records `steps`; 3x3
+        tensors per bin."""
+        edges = np.linspace(self.lo[self.n], self.lo[self.n] + self.span[self.n],
+                            bins + 1)
+        dy = np.diff(edges)
+        volume = 4.0 / 3.0 * np.pi * self.a**3
+        hp = np.zeros((bins, 3, 3))
+        c = np.zeros((bins, 3, 3))
+        for k in steps:
+            SH = symm6_to_tensor(self.S[k]) \
+                + (self.s[k] / 3.0)[:, None, None] * np.eye(3)
+            Sc = symm6_to_tensor(self.Sc[k])
+            for b in range(bins):
+                w = slab_volume(self.x[k, :, self.n], self.a, edges[b],
+                                edges[b + 1]) / volume
+                hp[b] += np.einsum("p,pij->ij", w, SH)
+                c[b] += np.einsum("p,pij->ij", w, Sc)
+        scale = 1.0 / (len(steps) * self.area * dy)[:, None, None]
+        return hp * scale, c * scale
+
     # Core quantities per record -----------------------------------------
 
     def in_core(self, k):

@@ -152,6 +152,47 @@ def poiseuille_profile(sigma22, phi_mean, phi_j, y_max=0.5, n=401):
     return y, profile(c), c
 
 
+def poiseuille_transient(sigma22, phi0, width, phi_j, times, n=100,
+                         abar=1.2, courant=0.4, y_max=0.5):
+    """Migration from a uniform phi0 in plane Poiseuille flow (appendix F,
+    eq F.8b, half channel):
+
+        d phi/dt* = (8/9)(abar/L_y)^2 d/dy* ( f(phi) d/dy* (|y*| Sigma_22(phi)) )
+
+    with f = (1 - phi)^5.1 (Badia et al. 2022), zero flux at the centre
+    plane (symmetry) and at y* = y_max (the wall, F.7, or the edge of the
+    wall layers that the thesis leaves out, 6.3.2), the empirical jamming rule of
+    section 6.3.2: no flux into a cell at phi_j.  The sign is that of a
+    positive particle pressure |y*| Sigma_22: particles move down its
+    gradient, toward the centre.  Finite volumes on n cells of
+    0 <= y* <= y_max (width = L_y/a1, abar in a1), explicit steps at the
+    given fraction of the diffusive limit; the volume is conserved to
+    round-off.  Returns (y, {t: phi(y)} for t in times)."""
+    dy = y_max / n
+    y = (np.arange(n) + 0.5) * dy
+    k = 8.0 / 9.0 * (abar / width) ** 2
+    phi = np.full(n, float(phi0))
+    pending = sorted(float(t) for t in times)
+    out, t = {}, 0.0
+    while pending:
+        f = (1 - phi) ** 5.1
+        pressure = y * sigma22(phi)
+        # local diffusivity k f |y| dSigma_22/dphi sets the stable step
+        dp = y * (sigma22(np.minimum(phi + 1e-6, phi_j)) - sigma22(phi)) / 1e-6
+        diffusivity = k * np.max(f * np.abs(dp)) + 1e-300
+        dt = min(courant * dy**2 / diffusivity, pending[0] - t)
+        flux = -k * 0.5 * (f[1:] + f[:-1]) * np.diff(pressure) / dy
+        # faces between cells i, i+1: positive flux goes to i+1
+        receiver = np.where(flux > 0, phi[1:], phi[:-1])
+        flux[receiver >= phi_j] = 0.0
+        flux = np.r_[0.0, flux, 0.0]
+        phi = phi - dt * np.diff(flux) / dy
+        t += dt
+        if t >= pending[0] - 1e-12:
+            out[pending.pop(0)] = phi.copy()
+    return y, out
+
+
 def poiseuille_velocity(y, phi, eta_s):
     """u*(y*) of eq F.8a, du*/dy* = -4 y*/eta_s(phi(y*)), no slip at the
     wall y* = y[-1] (y from the centre plane, in channel widths, velocity

@@ -1,8 +1,9 @@
 """Unit tests of fdmPost.suspensionBalance: the closures against the values
 tabulated in spec D.4 (3 significant figures), the resuspension profile
 against the closed form of a quadratic closure and against eq 3 itself,
-the eq 6 inversion, and the Poiseuille zero-flux profile against its
-closed form for a linear closure."""
+the eq 6 inversion, the Poiseuille zero-flux profile against its
+closed form for a linear closure, and the Poiseuille migration (eq F.8b)
+against that profile and its own scaling."""
 
 import unittest
 
@@ -103,6 +104,31 @@ class Poiseuille(unittest.TestCase):
         self.assertGreater(plug.sum(), 3)
         self.assertLess(np.ptp(u[plug]) / u[0], 1e-6)
         self.assertAlmostEqual(np.trapz(phi, y) / 0.5, 0.5, delta=1e-3)
+
+    def test_migration_conserves_volume_and_reaches_the_steady_profile(self):
+        # eq F.8b from a uniform phi0 = 0.4 ends on the zero-flux profile of
+        # eqs F.10-F.11 (computed independently, |y| Sigma_22 = C); the
+        # particle volume is conserved at every time
+        phij = 0.592
+        _, sigma22 = sbm.morris_boulay_poiseuille(phij)
+        y, out = sbm.poiseuille_transient(sigma22, 0.4, 5.0, phij,
+                                          [1.0, 60.0], n=30)
+        for phi in out.values():
+            self.assertAlmostEqual(phi.mean(), 0.4, delta=1e-12)
+        early, late = out[1.0], out[60.0]
+        self.assertGreater(early[0], 0.4)    # toward the centre
+        self.assertLess(early[-1], 0.4)
+        ys, phis, _ = sbm.poiseuille_profile(sigma22, 0.4, phij, n=2001)
+        steady = np.interp(y, ys, phis)
+        outside = y > 0.1                    # away from the plug's edge
+        self.assertLess(np.abs(late - steady)[outside].max(), 1e-3)
+
+    def test_migration_time_scales_with_the_channel_width_squared(self):
+        # eq F.8b has the single time scale (9/8)(L_y/abar)^2 (eq F.9)
+        _, sigma22 = sbm.morris_boulay_poiseuille(0.592)
+        _, a = sbm.poiseuille_transient(sigma22, 0.4, 5.0, 0.592, [2.0], n=30)
+        _, b = sbm.poiseuille_transient(sigma22, 0.4, 10.0, 0.592, [8.0], n=30)
+        self.assertLess(np.abs(a[2.0] - b[8.0]).max(), 2e-3)
 
 
 if __name__ == "__main__":
