@@ -29,7 +29,8 @@ Plane Poiseuille flow (thesis 1, appendix F): the shear stress is linear,
 |sigma_xy| = G |y|, and with the normal stress ratio
 Sigma_22(phi) = eta_22(phi)/eta_s(phi) the zero-flux steady state (F.10)
 is |y| Sigma_22(phi(y)) = C, clipped at phi_J in the plug; C follows from
-the mean volume fraction (F.11).
+the mean volume fraction (F.11).  The migration toward it from a uniform
+phi0 is eq F.8b (poiseuille_transient).
 """
 
 import inspect
@@ -161,8 +162,8 @@ def poiseuille_transient(sigma22, phi0, width, phi_j, times, n=100,
 
     with f = (1 - phi)^5.1 (Badia et al. 2022), zero flux at the centre
     plane (symmetry) and at y* = y_max (the wall, F.7, or the edge of the
-    wall layers that the thesis leaves out, 6.3.2), the empirical jamming rule of
-    section 6.3.2: no flux into a cell at phi_j.  The sign is that of a
+    wall layers that the thesis leaves out), and the empirical jamming rule
+    of section 6.3.2: no flux into a cell at phi_j.  The sign is that of a
     positive particle pressure |y*| Sigma_22: particles move down its
     gradient, toward the centre.  Finite volumes on n cells of
     0 <= y* <= y_max (width = L_y/a1, abar in a1), explicit steps at the
