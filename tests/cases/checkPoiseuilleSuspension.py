@@ -33,8 +33,7 @@ checks.check("x momentum: |wall + lambda + drive| / |drive|", residual, 1e-2)
 nb = int(round(L[1]))
 edges = np.linspace(0, L[1], nb + 1)
 yb = 0.5 * (edges[1:] + edges[:-1])
-U = np.mean([cf.layer_means(cf.field(work, "U", t, n), n)[:, 0]
-             for t in (0.025, 0.05)], axis=0)
+U = cf.mean_layers(work, "U", (0.025, 0.05), n)[:, 0]
 hp, c = cs.stress_profiles(nb, range(len(cs.t)))
 sxy = eta * cf.shear_rate_bins(U, edges, L[1]) + hp[:, 0, 1] + c[:, 0, 1]
 slope, level = cf.shear_stress_line(yb, sxy, L[1], (yb > 1) & (yb < L[1] - 1))

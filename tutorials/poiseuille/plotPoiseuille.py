@@ -73,10 +73,6 @@ class Run:
     def phi0(self):
         return (4 / 3 * np.pi * self.cs.a**3).sum() / self.L.prod()
 
-    def mean_field(self, name):
-        return np.mean([cf.layer_means(cf.field(self.case, name, w, self.n),
-                                       self.n) for w in self.written], axis=0)
-
 
 def migration(run, layer, phij, ax):
     """phi(y) per window against eq F.8b in the core, the SBM's domain
@@ -237,7 +233,7 @@ def main():
     run = Run(args.case, args.windows)
     fig, ax = plt.subplots(1, 4, figsize=(17, 4.2))
     phi = migration(run, args.layer, args.phij, ax[0])
-    U = run.mean_field("U")[:, 0]
+    U = cf.mean_layers(run.case, "U", run.written, run.n)[:, 0]
     hp, c = run.cs.stress_profiles(run.nb, run.windows[-1])
     x_momentum(run, U, hp, c, ax[2])
     y_momentum(run, hp, c, ax[3])

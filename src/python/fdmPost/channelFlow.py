@@ -10,24 +10,19 @@ import numpy as np
 
 from fdmPost.foamFields import read_internal_field
 from fdmPost.particleCase import momentum_balance
-from fdmPost.rheology import CouetteSeries, number, vector
+from fdmPost.rheology import channel_case, number, vector
 
 
 def read_case(case):
     """(particle series, box L, cells n, eta, dP0/dx) of a channel case:
-    box and mesh from system/blockMeshDict (Lx Ly Lz nx ny nz), eta = rho
-    nu from constant/transportProperties, the x component of
-    meanPressureGradient from constant/flowProperties."""
-    mesh = open(f"{case}/system/blockMeshDict").read()
-    L = np.array([number(mesh, k) for k in ("Lx", "Ly", "Lz")])
+    fdmPost.rheology.channel_case, the cells nx ny nz of
+    system/blockMeshDict and the x component of meanPressureGradient from
+    constant/flowProperties."""
+    cs, L, mesh = channel_case(case, 0.0)
     n = np.array([int(number(mesh, k)) for k in ("nx", "ny", "nz")])
-    transport = open(f"{case}/constant/transportProperties").read()
-    eta = number(transport, "rho") * number(transport, "nu")
     G = vector(open(f"{case}/constant/flowProperties").read(),
                "meanPressureGradient")[0]
-    cs = CouetteSeries.from_h5(f"{case}/postProcessing/particles.h5",
-                               lo=(0, 0, 0), span=L, eta=eta, layer=0.0)
-    return cs, L, n, eta, G
+    return cs, L, n, cs.eta, G
 
 
 def layer_means(values, n):
@@ -38,6 +33,12 @@ def layer_means(values, n):
 
 def field(case, name, time, n):
     return read_internal_field(f"{case}/{time:g}/{name}", nCells=n.prod())
+
+
+def mean_layers(case, name, times, n):
+    """Layer means of a field, averaged over the written times."""
+    return np.mean([layer_means(field(case, name, t, n), n) for t in times],
+                   axis=0)
 
 
 def fluid_pressure(p, n, L, centres, radii):

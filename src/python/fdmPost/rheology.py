@@ -206,20 +206,27 @@ def _wall_velocity(text, patch):
     return float(re.search(r"uniform\s*\(\s*(\S+)", block).group(1))
 
 
-def couette_case(case, layer):
-    """The particle series of a Couette case directory and its imposed
-    shear rate: box from system/blockMeshDict (Lx Ly Lz from the origin),
-    eta = rho nu from constant/transportProperties, wall velocities of
-    bottomWall and topWall from 0/U."""
+def channel_case(case, layer):
+    """The particle series of a channel case directory (walls normal to y
+    from the origin): box from system/blockMeshDict (Lx Ly Lz), eta = rho
+    nu from constant/transportProperties.  Returns (series, L, mesh text)."""
     mesh = open(f"{case}/system/blockMeshDict").read()
     L = np.array([number(mesh, k) for k in ("Lx", "Ly", "Lz")])
     transport = open(f"{case}/constant/transportProperties").read()
     eta = number(transport, "rho") * number(transport, "nu")
+    cs = CouetteSeries.from_h5(f"{case}/postProcessing/particles.h5",
+                               lo=(0, 0, 0), span=L, eta=eta, layer=layer)
+    return cs, L, mesh
+
+
+def couette_case(case, layer):
+    """The particle series of a Couette case directory (channel_case) and
+    its imposed shear rate from the wall velocities of bottomWall and
+    topWall in 0/U."""
+    cs, L, _ = channel_case(case, layer)
     U0 = open(f"{case}/0/U").read()
     gamma0 = (_wall_velocity(U0, "topWall")
               - _wall_velocity(U0, "bottomWall")) / L[1]
-    cs = CouetteSeries.from_h5(f"{case}/postProcessing/particles.h5",
-                               lo=(0, 0, 0), span=L, eta=eta, layer=layer)
     return cs, gamma0
 
 

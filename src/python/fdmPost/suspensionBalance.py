@@ -177,9 +177,10 @@ def poiseuille_transient(sigma22, phi0, width, phi_j, times, n=100,
     out, t = {}, 0.0
     while pending:
         f = (1 - phi) ** 5.1
-        pressure = y * sigma22(phi)
+        s22 = sigma22(phi)
+        pressure = y * s22
         # local diffusivity k f |y| dSigma_22/dphi sets the stable step
-        dp = y * (sigma22(np.minimum(phi + 1e-6, phi_j)) - sigma22(phi)) / 1e-6
+        dp = y * (sigma22(np.minimum(phi + 1e-6, phi_j)) - s22) / 1e-6
         diffusivity = k * np.max(f * np.abs(dp)) + 1e-300
         dt = min(courant * dy**2 / diffusivity, pending[0] - t)
         flux = -k * 0.5 * (f[1:] + f[:-1]) * np.diff(pressure) / dy
