@@ -372,14 +372,20 @@ def reference(spheres, walls, ambient, level=3, beta=0.5, **kw):
     return fine
 
 
-def channel_sphere(H, d, flow, radius=1.0, **kw):
-    """Free sphere (radius a) with its centre at height d above the wall
-    y = 0, second wall at y = H, in plane Couette ("couette", unit shear
-    rate, zero velocity at y = H/2) or plane Poiseuille ("poiseuille",
-    centre-line velocity 1) flow.  U (3,), Omega (3,), S (3,3), elements,
-    and the estimated discretisation error of each ("error")."""
+def channel_spheres(H, centres, flow, radius=1.0, **kw):
+    """Free spheres (radius a, centres (n, 3), walls y = 0 and y = H) in
+    plane Couette ("couette", unit shear rate, zero velocity at y = H/2) or
+    plane Poiseuille ("poiseuille", centre-line velocity 1) flow.  Returns
+    U (n, 3), Omega (n, 3), S (n, 3, 3), elements, and the estimated
+    discretisation error of each ("error")."""
     ambient = {"couette": couette, "poiseuille": poiseuille}[flow](H)
-    r = reference([((0.0, d, 0.0), radius)], [0.0, H], ambient, **kw)
+    return reference([(c, radius) for c in centres], [0.0, H], ambient, **kw)
+
+
+def channel_sphere(H, d, flow, radius=1.0, **kw):
+    """One free sphere with its centre at height d (channel_spheres):
+    U (3,), Omega (3,), S (3, 3), elements, error."""
+    r = channel_spheres(H, [(0.0, d, 0.0)], flow, radius, **kw)
     return {"U": r["U"][0], "Omega": r["Omega"][0], "S": r["S"][0],
             "elements": r["elements"],
             "error": {k: v[0] for k, v in r["error"].items()}}

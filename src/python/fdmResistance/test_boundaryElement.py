@@ -16,7 +16,9 @@ Checks and tolerances (coarse meshes, level 2: 320 sphere elements):
       `reference` (|fine - coarse|/3) bounds the true error of the fine mesh
   channel symmetries: sphere at the centre of plane Couette flow does not
       translate; sphere on the centre line of plane Poiseuille flow does not
-      rotate or drift across (1e-8)
+      rotate or drift across; two spheres placed point-symmetrically about
+      the centre of a Couette channel move with U1 = -U2, Omega1 = Omega2
+      and equal stresslets (1e-8; the meshes share the symmetry)
 """
 
 import os
@@ -79,6 +81,14 @@ class ChannelSymmetry(unittest.TestCase):
         np.testing.assert_allclose(r["Omega"], 0, atol=1e-8)
         self.assertAlmostEqual(r["U"][1], 0, delta=1e-8)
         self.assertTrue(0 < r["U"][0] < 1)
+
+    def test_couette_pair_point_symmetry(self):
+        r = be.channel_spheres(4.0, [(-1.3, 1.7, 0.0), (1.3, 2.3, 0.0)],
+                               "couette", level=1, beta=1.0)
+        np.testing.assert_allclose(r["U"][0], -r["U"][1], atol=1e-8)
+        np.testing.assert_allclose(r["Omega"][0], r["Omega"][1], atol=1e-8)
+        np.testing.assert_allclose(r["S"][0], r["S"][1], atol=1e-8)
+        self.assertGreater(abs(r["U"][0][1]), 1e-4)   # they do interact
 
 
 if __name__ == "__main__":
