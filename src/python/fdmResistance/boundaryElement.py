@@ -39,6 +39,9 @@ stresslet) and the single-wall free sphere in shear (Goldman, Cox & Brenner
 import numpy as np
 
 EIGHT_PI = 8.0 * np.pi
+LEVI_CIVITA = np.zeros((3, 3, 3))
+LEVI_CIVITA[0, 1, 2] = LEVI_CIVITA[1, 2, 0] = LEVI_CIVITA[2, 0, 1] = 1
+LEVI_CIVITA[0, 2, 1] = LEVI_CIVITA[2, 1, 0] = LEVI_CIVITA[1, 0, 2] = -1
 
 # --------------------------------------------------------------------------
 # quadrature on the unit triangle (xi, eta >= 0, xi + eta <= 1), area 1/2
@@ -195,15 +198,13 @@ def wall_surface(y, centre_xz, half_width, cells=4):
 # --------------------------------------------------------------------------
 # single-layer matrix
 # --------------------------------------------------------------------------
-def _oseen_sum(x, y, w):
-    """sum_q G(x - y_q) w_q for collocation points x (m, 3) against
-    quadrature points y (m, q, 3) or (q, 3); returns (m, 3, 3)."""
-    r = x[:, None, :] - y
+def _oseen_sum(r, w):
+    """sum_q w_q G(r_q) over the quadrature axis: r (..., q, 3), w (..., q);
+    returns (..., 3, 3)."""
     d = np.linalg.norm(r, axis=-1)
     inv = w / d
-    out = np.einsum("mq,ij->mij", inv, np.eye(3))
-    out += np.einsum("mq,mqi,mqj->mij", inv / d ** 2, r, r)
-    return out
+    return (inv.sum(axis=-1)[..., None, None] * np.eye(3)
+            + np.einsum("...q,...qi,...qj->...ij", inv / d ** 2, r, r))
 
 
 def single_layer(surfaces, near_factor=3.0, chunk=256):
@@ -225,13 +226,8 @@ def single_layer(surfaces, near_factor=3.0, chunk=256):
     A = np.empty((n, 3, n, 3))
     for m0 in range(0, n, chunk):
         m = slice(m0, min(n, m0 + chunk))
-        x = xs[m]
-        r = x[:, None, None, :] - yq[None]              # (cm, n, q, 3)
-        d = np.linalg.norm(r, axis=-1)
-        inv = wq[None] / d
-        blk = (np.einsum("mnq,ij->minj", inv, np.eye(3))
-               + np.einsum("mnq,mnqi,mnqj->minj", inv / d ** 2, r, r))
-        A[m] = blk
+        blk = _oseen_sum(xs[m, None, None, :] - yq[None], wq[None])
+        A[m] = blk.transpose(0, 2, 1, 3)               # (m, i, e, j)
     # near pairs and self terms
     dist = np.linalg.norm(xs[:, None, :] - xs[None, :, :], axis=-1)
     mi, ei = np.nonzero(dist < near_factor * size[None, :])
@@ -240,12 +236,10 @@ def single_layer(surfaces, near_factor=3.0, chunk=256):
         m, e = mi[k], ei[k]
         selfm = m == e
         blk = np.empty((len(m), 3, 3))
-        if (~selfm).any():
-            blk[~selfm] = _oseen_sum(xs[m[~selfm]], yn[e[~selfm]],
-                                     wn[e[~selfm]])
-        if selfm.any():
-            blk[selfm] = _oseen_sum(xs[m[selfm]], ys[e[selfm]],
-                                    ws[e[selfm]])
+        for sel, y, w in ((~selfm, yn, wn), (selfm, ys, ws)):
+            if sel.any():
+                blk[sel] = _oseen_sum(xs[m[sel], None, :] - y[e[sel]],
+                                      w[e[sel]])
         A[m, :, e, :] = blk
     return A.reshape(3 * n, 3 * n), xs, areas
 
@@ -274,6 +268,7 @@ def free_spheres(spheres, walls, ambient, level=3, beta=0.5, half_width=None):
     else:
         R = half_width or 30.0 * max(rs)
         cap = np.inf
+
     def dist_to_spheres(x, skip=None):
         d = [np.linalg.norm(x - c, axis=1) - r
              for k, (c, r) in enumerate(zip(cs, rs)) if k != skip]
@@ -311,25 +306,16 @@ def free_spheres(spheres, walls, ambient, level=3, beta=0.5, half_width=None):
         idx = np.nonzero(owner == k)[0]
         rel = xs[idx] - cs[k]
         col = 3 * n + 6 * k
+        # (r x) as a matrix per element: (r x v)_i = cross[p, i, j] v_j
+        cross = np.einsum("ijk,pj->pik", LEVI_CIVITA, rel)
         for i in range(3):
             M[3 * idx + i, col + i] = -1.0                  # -U
-        # -(Omega x r)_i = -eps_ijk Omega_j r_k
-        eps = np.zeros((3, 3, 3))
-        eps[0, 1, 2] = eps[1, 2, 0] = eps[2, 0, 1] = 1
-        eps[0, 2, 1] = eps[2, 1, 0] = eps[1, 0, 2] = -1
-        for i in range(3):
-            for j in range(3):
-                M[3 * idx + i, col + 3 + j] = -np.einsum("k,pk->p",
-                                                         eps[i, j], rel)
-        # force- and torque-free: sum f A = 0, sum r x f A = 0
-        for i in range(3):
+            # -(Omega x r)_i = (r x Omega)_i
+            M[3 * idx + i, col + 3:col + 6] = cross[:, i, :]
+            # force- and torque-free: sum f A = 0, sum (r x f) A = 0
             M[col + i, 3 * idx + i] = areas[idx]
             for j in range(3):
-                for kk in range(3):
-                    if eps[i, j, kk]:
-                        M[col + 3 + i, 3 * idx + kk] = (eps[i, j, kk]
-                                                        * rel[:, j]
-                                                        * areas[idx])
+                M[col + 3 + i, 3 * idx + j] = cross[:, i, j] * areas[idx]
     sol = np.linalg.solve(M, rhs)
     f = sol[:3 * n].reshape(n, 3)
     out = {"U": [], "Omega": [], "S": [], "elements": n}
