@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Report of the channel sphere validation (run.py): for every (family,
-H, d, sphere) the mean and scatter over the in-plane positions of the normalised
-velocities and stresslet with the frameInvariant sub-grid model, and the
-FDM alone at one position, against the free spheres in the channel of
-fdmResistance.boundaryElement.channel_spheres (cached in reference.dat
-with its discretisation error); writes report.md and channelSphere.png.
+H, d, sphere) the mean and scatter over the in-plane positions of the
+normalised velocities and stresslet with the frameInvariant sub-grid
+model, and the FDM alone at one position, against the free spheres in
+the channel of fdmResistance.boundaryElement.channel_spheres (cached in
+reference.dat with its discretisation error); writes report.md and
+channelSphere.png.
 
     ./report.py [--recompute]      (run.py calls it after the solves)
 
@@ -15,8 +16,8 @@ Where the normalised reference is near zero (|reference| < 0.1: U_x and
 U_y of the shear family and U_y of the Poiseuille family, zero by
 symmetry; U_y and the angular velocity of the pair's centre-line sphere)
 the target is an absolute |error| of at most 0.01 in the normalised unit
-instead.  Without a reference (channel_sphere not
-importable) the table is written with "n/a" and the result is FAIL.
+instead.  Where a reference cannot be computed the table shows "n/a"
+and the result is FAIL.
 
 Normalisation (a = 1, eta = nu rho of the template, shear rate 1 or
 U_c = 1): shear -Omega_z/shear (0.5 unbounded), S_xy/((10/3) pi eta a^3

@@ -15,7 +15,8 @@ where u_inf is an ambient Stokes flow that already satisfies the wall
 conditions (plane Couette or plane Poiseuille), f is the traction exerted by
 the fluid on each sphere (sigma.n, n into the fluid) and the disturbance
 traction jump on each wall, which is a zero-thickness square sheet of half
-width R (truncated: 4 channel widths, or 30 a for a single wall).  No-slip on the sphere,
+width R (truncated: 4 channel widths, or 30 a for a single wall).  No-slip
+on the sphere,
 u = U + Omega x (x - c), and zero disturbance on the walls give one vector
 equation per element; force- and torque-free conditions close the system.
 
@@ -188,7 +189,8 @@ def wall_surface(y, centre_xz, half_width, cells=4):
     tri = []
     for i in range(cells):
         for j in range(cells):
-            p = [np.array([centre_xz[0] + s[i + a], y, centre_xz[1] + s[j + b]])
+            p = [np.array([centre_xz[0] + s[i + a], y,
+                           centre_xz[1] + s[j + b]])
                  for a, b in ((0, 0), (1, 0), (1, 1), (0, 1))]
             m = sum(p) / 4
             tri += [[p[k], p[(k + 1) % 4], m] for k in range(4)]
@@ -366,12 +368,3 @@ def channel_spheres(H, centres, flow, radius=1.0, **kw):
     discretisation error of each ("error")."""
     ambient = {"couette": couette, "poiseuille": poiseuille}[flow](H)
     return reference([(c, radius) for c in centres], [0.0, H], ambient, **kw)
-
-
-def channel_sphere(H, d, flow, radius=1.0, **kw):
-    """One free sphere with its centre at height d (channel_spheres):
-    U (3,), Omega (3,), S (3, 3), elements, error."""
-    r = channel_spheres(H, [(0.0, d, 0.0)], flow, radius, **kw)
-    return {"U": r["U"][0], "Omega": r["Omega"][0], "S": r["S"][0],
-            "elements": r["elements"],
-            "error": {k: v[0] for k, v in r["error"].items()}}
