@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Validation: free sphere in a plane channel (thesis 1, sections 4.1.2b
-and 4.1.2c).
+"""Validation: free spheres in a plane channel (thesis 1, sections 4.1.2b,
+4.1.2c and 4.1.4).
 
-A free (force- and torque-free) sphere, a = 1, Delta = a/5, between walls
+Free (force- and torque-free) spheres, a = 1, Delta = a/5, between walls
 normal to y at y = 0 and y = H, cyclic in x and z with period L (default
 16 a, --box).  One steady solve per case (endTime 0: the first record of
 particles.h5), at --positions in-plane positions inside a mesh cell
@@ -24,7 +24,6 @@ poiseuille  stationary walls, flow driven by the kinematic mean pressure
             H = 2.8 (2a/H = 0.714), d/a = 1.1, 1.2, 1.4.  Measured:
             U_x/U_c, Omega_z a/U_c, S_xy/(4 U_c eta a^3/H) (the
             normalisation of Ghalya et al. 2020), U_y.
-
 pair        two free spheres in the Poiseuille channel H = 4 a of
             Bhattacharya et al. (2006), thesis 1 section 4.1.4: sphere 1 on
             the centre line, sphere 2 downstream with its centre 1.33 a
