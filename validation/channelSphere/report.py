@@ -38,8 +38,8 @@ sys.path.insert(0, os.path.join(os.environ.get("FDM_PROJECT_DIR",
                                                os.path.join(HERE, "..", "..")),
                                 "src", "python"))
 from fdmPost.report import write_markdown  # noqa: E402
+from run import PAIR_Y2, U_C, centres  # noqa: E402  (one geometry)
 
-U_C = 1.0
 REL_TOL = {"velocity": 0.03, "stresslet": 0.05}
 NEAR_ZERO = 0.1
 ABS_TOL = 0.01
@@ -61,7 +61,6 @@ QUANTITIES = {
              ("2a Omega_z/U_c", "velocity"),
              ("S_xy/(4 U_c eta a^3/H)", "stresslet")]}
 FAMILIES = ("shear", "poiseuille", "pair")
-PAIR_Y2 = 1.33
 
 
 def template_eta():
@@ -124,7 +123,8 @@ def write_reference_cache(cache):
     with open(REFERENCE_FILE, "w") as f:
         f.write("# free spheres a = 1, eta = 1 in the channel 0 < y < H "
                 "from fdmResistance.boundaryElement.channel_spheres "
-                "(centre at y = d; pair: (0, H/2, 0) and (d H, %g, 0)); "
+                "(centre at y = d; pair: (-d H/2, H/2, 0) and (d H/2, %g, "
+                "0)); "
                 "shear: u = (y - H/2, 0, 0), poiseuille and pair: "
                 "u = (4 y (H - y)/H^2, 0, 0)\n# family H d sphere U_x U_y "
                 "U_z Omega_x Omega_y Omega_z S_xx S_xy S_xz S_yx S_yy S_yz "
@@ -138,16 +138,15 @@ def write_reference_cache(cache):
 def boundary_element(family, H, d):
     """Reference of one configuration: {sphere: 30 numbers}."""
     from fdmResistance.boundaryElement import channel_spheres
-    if family == "pair":
-        centres = [(0.0, H / 2, 0.0), (d * H, PAIR_Y2, 0.0)]
-    else:
-        centres = [(0.0, d, 0.0)]
-    r = channel_spheres(H, centres, "couette" if family == "shear"
+    # the solver's geometry (the walls are unbounded along x and z, so the
+    # origin does not matter: moving it changes the result by 1e-13)
+    x = centres(family, H, d, 0.0, (0.0, 0.0))
+    r = channel_spheres(H, x, "couette" if family == "shear"
                         else "poiseuille")
     return {i + 1: np.concatenate(
         [np.ravel(r[q][i]) for q in ("U", "Omega", "S")]
         + [np.ravel(r["error"][q][i]) for q in ("U", "Omega", "S")])
-        for i in range(len(centres))}
+        for i in range(len(x))}
 
 
 def references(keys, recompute):

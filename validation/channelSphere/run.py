@@ -69,8 +69,9 @@ import time
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
-                                "python"))
+sys.path.insert(0, os.path.join(os.environ.get("FDM_PROJECT_DIR",
+                                               os.path.join(HERE, "..", "..")),
+                                "src", "python"))
 sys.path.insert(0, HERE)
 from fdmPost.caseRunner import (cell_offsets, fill_template,  # noqa: E402
                                 run_case, vec)
