@@ -219,6 +219,69 @@ TEST(lubricatedContact, torquesActOnlyWithinOneRadius)
 }
 
 
+TEST(lubricatedContact, surfaceVelocityIsFrameInvariantWithEitherArms)
+{
+    // A pair of unequal spheres in rigid-body rotation: no slip (both arm
+    // choices); a pure relative translation along the tangent: the
+    // contact-point slip is that velocity, the radius slip is it scaled by
+    // (a_1 + a_2)/(a_1 + a_2 + u_n) (YADE's avoidGranularRatcheting)
+    const vector n(0.6, 0.64, 0.48);
+    const scalar a1 = 1, a2 = 1.4, un = 0.3;
+    const vector Omega(0.3, -0.7, 0.5);
+    const vector dv = Omega ^ ((a1 + a2 + un)*n);
+    const vector t = vector(0, 0.6, -0.8);   // t.n = 0
+    for (const auto arms :
+        {
+            fdm::lubricatedContact::shearArms::contactPoint,
+            fdm::lubricatedContact::shearArms::radius
+        })
+    {
+        const fdm::lubricatedContact m(1, 1e4, 1, 0.5, 0, 0.4, 2, arms);
+        EXPECT_LT
+        (
+            mag(m.surfaceVelocity(dv, n, un, a1, a2, Omega, Omega)), 1e-14
+        );
+        const scalar scale =
+            arms == fdm::lubricatedContact::shearArms::radius
+          ? (a1 + a2)/(a1 + a2 + un) : 1;
+        EXPECT_LT
+        (
+            mag(m.surfaceVelocity(t, n, un, a1, a2, Zero, Zero) - scale*t),
+            1e-14
+        );
+    }
+}
+
+
+TEST(lubricatedContact, shearArmsKeywordListsTheChoices)
+{
+    FatalIOError.throwExceptions();
+    dictionary d;
+    d.add("viscosity", 1.0);
+    d.add("stiffness", 1e4);
+    d.add("roughness", 1e-3);
+    d.add("friction", 0.2);
+    d.add("shearArms", "radius");
+    EXPECT_EQ
+    (
+        fdm::lubricatedContact(d).arms(),
+        fdm::lubricatedContact::shearArms::radius
+    );
+    d.set("shearArms", "centre");
+    try
+    {
+        fdm::lubricatedContact m(d);
+        FAIL() << "unknown shearArms accepted";
+    }
+    catch (const Foam::error& e)
+    {
+        const std::string msg(e.message());
+        EXPECT_NE(msg.find("centre"), std::string::npos);
+        EXPECT_NE(msg.find("contactPoint"), std::string::npos);
+    }
+}
+
+
 TEST(lubricatedContact, badInputNamesTheKeyword)
 {
     FatalIOError.throwExceptions();

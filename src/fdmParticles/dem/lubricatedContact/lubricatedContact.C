@@ -11,6 +11,13 @@
 
 using Foam::constant::mathematical::pi;
 
+const Foam::Enum<Foam::fdm::lubricatedContact::shearArms>
+Foam::fdm::lubricatedContact::shearArmsNames
+({
+    {shearArms::contactPoint, "contactPoint"},
+    {shearArms::radius, "radius"},
+});
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::fdm::lubricatedContact::gapUpdate
@@ -80,6 +87,10 @@ Foam::fdm::lubricatedContact::lubricatedContact(const dictionary& dict)
             dict, "cutoff", 2, VSMALL, GREAT,
             "interaction while the gap is below cutoff*a; thesis 2 (4 for"
             " the two-sphere test)"
+        ),
+        shearArmsNames.lookupOrDefault
+        (
+            "shearArms", dict, shearArms::contactPoint
         )
     )
 {}
@@ -93,7 +104,8 @@ Foam::fdm::lubricatedContact::lubricatedContact
     const scalar tangentialStiffness,
     const scalar roughness,
     const scalar friction,
-    const scalar cutoff
+    const scalar cutoff,
+    const shearArms arms
 )
 :
     viscosity_(viscosity),
@@ -102,7 +114,8 @@ Foam::fdm::lubricatedContact::lubricatedContact
     kt_(tangentialStiffness*stiffness),
     roughness_(roughness),
     friction_(friction),
-    cutoff_(cutoff)
+    cutoff_(cutoff),
+    arms_(arms)
 {}
 
 
@@ -130,6 +143,27 @@ Foam::scalar Foam::fdm::lubricatedContact::shearLubricationCoefficient
     return
         0.5*pi*viscosity_*meanRadius
        *(-2 + (2 + u)*(std::log(2 + u) - logGap));
+}
+
+
+Foam::vector Foam::fdm::lubricatedContact::surfaceVelocity
+(
+    const vector& dv,
+    const vector& n,
+    const scalar centreGap,
+    const scalar radius1,
+    const scalar radius2,
+    const vector& spin1,
+    const vector& spin2
+) const
+{
+    if (arms_ == shearArms::contactPoint)
+    {
+        const scalar half = 0.5*centreGap;
+        return dv - (radius2 + half)*(spin2 ^ n) - (radius1 + half)*(spin1 ^ n);
+    }
+    const scalar sum = radius1 + radius2;
+    return sum/(sum + centreGap)*dv - radius2*(spin2 ^ n) - radius1*(spin1 ^ n);
 }
 
 

@@ -296,13 +296,15 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
         const scalar armI = radius_[i] + 0.5*un;
         const scalar armJ = radius_[j] + 0.5*un;
 
-        // Relative velocity of the surfaces at mid-gap, the affine shear
-        // across the branch vector included (frame-invariant: zero for a
-        // pair in rigid-body motion)
+        // Relative velocity of the surfaces, the affine shear across the
+        // branch vector included (frame-invariant: zero for a pair in
+        // rigid-body motion)
         vector dv = velocity_[j] - velocity_[i];
         dv.x() += shearRate_*l.y();
-        const vector contactVelocity =
-            dv - armJ*(spin_[j] ^ nij) - armI*(spin_[i] ^ nij);
+        const vector contactVelocity = model_.surfaceVelocity
+        (
+            dv, nij, un, radius_[i], radius_[j], spin_[i], spin_[j]
+        );
         const vector w = spin_[j] - spin_[i];
 
         const lubricatedPairLoads loads = model_.step
