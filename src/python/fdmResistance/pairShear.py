@@ -85,27 +85,44 @@ _I = np.eye(3)
 # hat name -> dimensional factor (a = 1, lambda = 1)
 _FAC = {"A": 6 * PI, "B": 4 * PI, "G": 4 * PI, "C": 8 * PI, "H": 8 * PI}
 # parity of the function under relabelling (lambda = 1): 22 = p*11, 21 = p*12
+# power of the length scale in each function's dimension (A ~ a, ...)
+_LENGTH_POWER = {"A": 1, "B": 2, "G": 2, "C": 3, "H": 3}
 _PAR = {"XA": 1, "YA": 1, "YB": -1, "XC": 1, "YC": 1, "XG": -1, "YG": -1,
         "YH": 1}
 
 
-def scalars(xi, xc=True):
-    """Dimensional resistance scalars (a = 1, eta = 1, lambda = 1) at gaps xi
-    (array): dict name -> array of shape (2, 2, n), [alpha-1, beta-1].
+def scalars(xi, xc=True, lam=LAM):
+    """Dimensional resistance scalars (a1 = 1, a2 = lam, eta = 1) at gaps
+    xi = 2|r|/(1 + lam) - 2 (array): dict name -> array of shape (2, 2, n),
+    [alpha-1, beta-1].  The 22 and 21 blocks are the 11 and 12 functions
+    of the relabelled pair (ratio 1/lam, lengths in a2 = lam, d reversed):
+    f22 = p lam^k f11^(1/lam), f21 = p lam^k f12^(1/lam), with k = 1 for A,
+    2 for B, G, 3 for C, H and p the parity (-1 for B, G; Jeffrey & Onishi
+    1984, Jeffrey 1992); at lam = 1 simply 22 = p 11, 21 = p 12.
     xc=False replaces X^C by its isolated-sphere values (8 pi, 0); it does
     not change the translational velocities (axial rotation decouples)."""
     xi = np.atleast_1d(np.asarray(xi, dtype=float))
     out = {}
     for f, p in _PAR.items():
         letter = f[1]
-        if f == "XC" and not xc:
-            s11, s12 = np.ones_like(xi), np.zeros_like(xi)
+
+        def pair(ratio):
+            if f == "XC" and not xc:
+                return np.ones_like(xi), np.zeros_like(xi)
+            return (np.atleast_1d(ts.hat(f[0] + "11" + letter, xi, ratio)),
+                    np.atleast_1d(ts.hat(f[0] + "12" + letter, xi, ratio)))
+        s11, s12 = pair(lam)
+        if lam == 1.0:
+            s22, s21 = s11, s12
         else:
-            s11 = ts.hat(f[0] + "11" + letter, xi, LAM)
-            s12 = ts.hat(f[0] + "12" + letter, xi, LAM)
-        s11 = np.atleast_1d(s11) * _FAC[letter]
-        s12 = np.atleast_1d(s12) * _FAC[letter]
-        out[f] = np.array([[s11, s12], [p * s12, p * s11]])
+            s22, s21 = pair(1.0 / lam)
+            if f == "XC" and not xc:
+                s22 = s22 * lam**3
+            else:
+                scale = lam ** _LENGTH_POWER[letter]
+                s22, s21 = scale * s22, scale * s21
+        fac = _FAC[letter]
+        out[f] = fac * np.array([[s11, s12], [p * s21, p * s22]])
     return out
 
 
@@ -139,15 +156,15 @@ def _tensors(d, S, k):
     return A, Bt, B, C, Gt, Ht
 
 
-def grand_resistance(r_vec, E=E_INF, xc=True, S=None, k=0):
+def grand_resistance(r_vec, E=E_INF, xc=True, S=None, k=0, lam=LAM):
     """(R, b): R (12 x 12) acting on (U1', U2', W1', W2') (velocities minus
-    ambient, a = 1) and right-hand side b = (Gt:E, Ht:E) of the force- and
-    torque-free equations R x = b."""
+    ambient; a1 = 1, a2 = lam) and right-hand side b = (Gt:E, Ht:E) of the
+    force- and torque-free equations R x = b."""
     r_vec = np.asarray(r_vec, dtype=float)
     r = float(np.linalg.norm(r_vec))
     d = r_vec / r
     if S is None:
-        S = scalars(np.array([r - 2.0]), xc=xc)
+        S = scalars(np.array([2.0 * r / (1.0 + lam) - 2.0]), xc=xc, lam=lam)
         k = 0
     A, Bt, B, C, Gt, Ht = _tensors(d, S, k)
     R = np.zeros((12, 12))
@@ -163,11 +180,11 @@ def grand_resistance(r_vec, E=E_INF, xc=True, S=None, k=0):
     return R, rhs
 
 
-def free_motion(r_vec, E=E_INF, W=W_INF, xc=True, S=None, k=0):
-    """Velocities of the two free spheres, x1 = -r/2, x2 = +r/2:
-    returns U1, U2, W1, W2 (ambient linear flow W x x + E.x)."""
+def free_motion(r_vec, E=E_INF, W=W_INF, xc=True, S=None, k=0, lam=LAM):
+    """Velocities of the two free spheres (a1 = 1, a2 = lam), x1 = -r/2,
+    x2 = +r/2: returns U1, U2, W1, W2 (ambient linear flow W x x + E.x)."""
     r_vec = np.asarray(r_vec, dtype=float)
-    R, rhs = grand_resistance(r_vec, E, xc, S, k)
+    R, rhs = grand_resistance(r_vec, E, xc, S, k, lam)
     sol = np.linalg.solve(R, rhs)
     x1, x2 = -0.5 * r_vec, 0.5 * r_vec
     U1 = sol[0:3] + np.cross(W, x1) + E @ x1

@@ -144,5 +144,39 @@ class Trajectories(unittest.TestCase):
                                    atol=1e-14)
 
 
+
+class UnequalSpheres(unittest.TestCase):
+    """a2/a1 = 1.4: the 22 and 21 blocks come from relabelling the pair."""
+
+    LAM = 1.4
+
+    def test_symmetric_functions_agree_with_their_transpose(self):
+        # A and C are symmetric operators: the relabelled 21 functions must
+        # equal the directly computed 12 ones
+        S = ps.scalars(np.array([0.003, 0.3, 12.0]), lam=self.LAM)
+        for f in ("XA", "YA", "XC", "YC"):
+            np.testing.assert_allclose(S[f][1, 0], S[f][0, 1], rtol=1e-9)
+        R, _ = ps.grand_resistance(np.array([1.1, 2.2, 0.4]), lam=self.LAM)
+        np.testing.assert_allclose(R, R.T, atol=1e-9 * np.abs(R).max())
+        self.assertGreater(np.linalg.eigvalsh(R).min(), 0)
+
+    def test_far_field_is_two_isolated_spheres(self):
+        S = ps.scalars(np.array([2000.0]), lam=self.LAM)
+        self.assertAlmostEqual(S["XA"][1, 1, 0] / (6 * math.pi), 1.4, 5)
+        self.assertAlmostEqual(S["YC"][1, 1, 0] / (8 * math.pi), 1.4**3, 5)
+
+    def test_relabelling_gives_the_same_motion(self):
+        # The same pair described from the large sphere (a1 = 1, a2 = 1/1.4,
+        # lengths divided by 1.4, r reversed): velocities scale with length,
+        # spins do not -- checks the parities and powers of every function
+        r = np.array([1.3, 2.1, 0.5])
+        U1, U2, W1, W2 = ps.free_motion(r, lam=self.LAM)
+        V1, V2, Z1, Z2 = ps.free_motion(-r / self.LAM, lam=1 / self.LAM)
+        np.testing.assert_allclose(U2 - U1, -(V2 - V1) * self.LAM,
+                                   atol=1e-10)
+        np.testing.assert_allclose(W1, Z2, atol=1e-10)
+        np.testing.assert_allclose(W2, Z1, atol=1e-10)
+
+
 if __name__ == "__main__":
     unittest.main()
