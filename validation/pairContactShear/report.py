@@ -47,6 +47,11 @@ def write(here, gaps, measured, spread, at_gaps, tracks, tol_offset,
             cells.append("-" if not np.isfinite(m) else
                          "%.4g (%.4g)" % (m, ex[f]))
         lines.append("| %g | " % g + " | ".join(cells) + " |")
+    spreads = ", ".join("%s %.3g" % (f, np.nanmax(spread[f]))
+                        for f in pc.FUNCTIONS if np.nanmax(spread[f]) > 0)
+    if spreads:
+        lines += ["", "Largest spread over the positions in a cell: "
+                  + spreads + "."]
     lines += ["", "Shear probes: A at 45 degrees, B and the spins c_i along "
               "the flow; load probes (walls at rest): a unit normal pair "
               "load (m_n) and a unit tangential pair load with its torques "

@@ -18,6 +18,17 @@ fdm::lubricatedContact model(const scalar eps, const scalar g = 1e4)
     return fdm::lubricatedContact(1, g, 1, 0.5, eps, 0.4, 2);
 }
 
+// The required keywords of the lubricatedContact dictionary
+dictionary inputs(const scalar friction)
+{
+    dictionary d;
+    d.add("viscosity", 1.0);
+    d.add("stiffness", 1e4);
+    d.add("roughness", 1e-3);
+    d.add("friction", friction);
+    return d;
+}
+
 fdm::lubricatedPairMotion normalMotion(const scalar un)
 {
     return {vector(0, 1, 0), un, 1, Zero, Zero, Zero};
@@ -256,11 +267,7 @@ TEST(lubricatedContact, surfaceVelocityIsFrameInvariantWithEitherArms)
 TEST(lubricatedContact, shearArmsKeywordListsTheChoices)
 {
     FatalIOError.throwExceptions();
-    dictionary d;
-    d.add("viscosity", 1.0);
-    d.add("stiffness", 1e4);
-    d.add("roughness", 1e-3);
-    d.add("friction", 0.2);
+    dictionary d(inputs(0.2));
     d.add("shearArms", "radius");
     EXPECT_EQ
     (
@@ -285,11 +292,7 @@ TEST(lubricatedContact, shearArmsKeywordListsTheChoices)
 TEST(lubricatedContact, badInputNamesTheKeyword)
 {
     FatalIOError.throwExceptions();
-    dictionary d;
-    d.add("viscosity", 1.0);
-    d.add("stiffness", 1e4);
-    d.add("roughness", 1e-3);
-    d.add("friction", -0.2);
+    const dictionary d(inputs(-0.2));
     try
     {
         fdm::lubricatedContact m(d);
