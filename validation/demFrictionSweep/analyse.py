@@ -35,7 +35,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from fdmPost.demRheology import (averages, phi_m, model_eta,  # noqa: E402
-                                 MU1, MU2, I0, INTRINSIC)
+                                 model_mu, model_mu_contact,
+                                 model_mu_hydrodynamic, MU1, MU2, I0)
 from fdmPost.report import write_markdown  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results.dat")
@@ -128,11 +129,6 @@ def friction_family(rows, lines):
     return fit
 
 
-def mu_contact(iv, mu1, mu2, i0):
-    """Contact part of eq 14."""
-    return mu1 + (mu2 - mu1) / (1 + i0 / np.asarray(iv))
-
-
 def phi_family(rows, lines):
     fam = [r for r in rows if r["mu_m"] == 0.4]
     cuts = sorted({r["cutoff"] for r in fam}, reverse=True)
@@ -143,10 +139,9 @@ def phi_family(rows, lines):
     iv = np.logspace(-4, 0.3, 200)
     phi_iv = phim / (1 + np.sqrt(iv))
     ax = axes[0]
-    ax.loglog(iv, mu_contact(iv, MU1, MU2, I0) + iv * (1 - phi_iv)
-              ** -INTRINSIC, "k-", label="eq 14, $\\mu$")
-    ax.loglog(iv, mu_contact(iv, MU1, MU2, I0), "k--", label="eq 14, $\\mu_c$")
-    ax.loglog(iv, iv * (1 - phi_iv) ** -INTRINSIC, "k:",
+    ax.loglog(iv, model_mu(iv, phim), "k-", label="eq 14, $\\mu$")
+    ax.loglog(iv, model_mu_contact(iv), "k--", label="eq 14, $\\mu_c$")
+    ax.loglog(iv, model_mu_hydrodynamic(iv, phi_iv), "k:",
               label="eq 14, $\\mu_h$")
     for k, cut in enumerate(cuts):
         sel = sorted((r for r in fam if r["cutoff"] == cut),
@@ -158,27 +153,27 @@ def phi_family(rows, lines):
                   "| phi (1 + I_v^1/2) |",
                   "|---|---|---|---|---|---|---|---|---|---|"]
         for r in sel:
-            model = (mu_contact(r["Iv"], MU1, MU2, I0)
-                     + r["Iv"] * (1 - phim / (1 + np.sqrt(r["Iv"])))
-                     ** -INTRINSIC)
+            model = model_mu(r["Iv"], phim)
             lines.append(
                 "| %.3f | %.4g | %.3f | %.3f | %.3f | %.3f | %.3f "
                 "| %.1f ± %.1f | %.1f | %.4f |"
                 % (r["phi"], r["Iv"], r["mu"], model, r["muContact"],
-                   r["muLubrication"], r["Iv"] * (1 - r["phi"]) ** -INTRINSIC,
+                   r["muLubrication"],
+                   model_mu_hydrodynamic(r["Iv"], r["phi"]),
                    r["eta_r"], r["eta_rErr"], model_eta(r["phi"], phim),
                    r["phi"] * (1 + np.sqrt(r["Iv"]))))
         if len(sel) >= 4:
-            p, cov = curve_fit(mu_contact, x, [r["muContact"] for r in sel],
+            p, cov = curve_fit(model_mu_contact, x, [r["muContact"] for r in sel],
                                p0=(MU1, MU2, I0), bounds=(0, [2, 5, 1]))
             err = np.sqrt(np.diag(cov))
             lines += ["", "Contact part fitted with eq 14's form: mu_1 = "
                       "%.3f ± %.3f, mu_2 = %.3f ± %.3f, I_0 = %.4f ± %.4f "
                       "(article 2: 0.36, 0.7, 0.0133)."
                       % (p[0], err[0], p[1], err[1], p[2], err[2])]
-            ax.loglog(iv, mu_contact(iv, *p), "--", color="C%d" % k, lw=0.8)
-        ratio = [r["muLubrication"] / (r["Iv"] * (1 - r["phi"])
-                                       ** -INTRINSIC) for r in sel]
+            ax.loglog(iv, model_mu_contact(iv, *p), "--", color="C%d" % k,
+                      lw=0.8)
+        ratio = [r["muLubrication"] / model_mu_hydrodynamic(r["Iv"], r["phi"])
+                 for r in sel]
         lines += ["", "mu_L / (I_v (1 - phi)^-5/2): %s."
                   % ", ".join("%.2f" % v for v in ratio)]
         ax.loglog(x, [r["mu"] for r in sel], "o", color="C%d" % k,

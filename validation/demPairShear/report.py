@@ -4,7 +4,6 @@
 
 import os
 
-import numpy as np
 from fdmPost.report import write_markdown  # noqa: E402
 
 

@@ -52,7 +52,6 @@ DELTA = 0.2
 L = 12.0
 GAPS = (0.0035, 0.005, 0.01, 0.03, 0.1, 0.3, 1.0, 4.0)
 CONTACT_GAPS = (0.0035, 0.005)   # where the load probes are needed
-PROBES = ("shear45", "shear0", "normal", "tangential")
 X0 = -6.0
 LAMBDA_TOL = 3e-6   # outer-loop lambda residual of the one steady solve
 TOL_OFFSET = 0.03      # exit offset, relative
@@ -60,24 +59,16 @@ TOL_TRAJECTORY = 0.05  # r_y, in a1
 
 
 def probe(gap, kind, offset, work):
-    """U2 - U1, W1, W2 of one frozen configuration."""
+    """U2 - U1, W1, W2 of one frozen configuration (pairContact's probe)."""
     dist = gap + 1 + LAM
-    l1, l2 = dist / (1 + LAM), LAM * dist / (1 + LAM)
-    d = (np.array([1.0, 1.0, 0.0]) / np.sqrt(2) if kind == "shear45"
-         else np.array([1.0, 0.0, 0.0]))
-    zero = np.zeros(3)
-    F1, T1, T2, wall = zero, zero, zero, L / 2
-    if kind == "normal":
-        F1, wall = -d, 0.0
-    elif kind == "tangential":
-        F1, T1, T2, wall = (np.array([0.0, 1.0, 0.0]), np.array([0, 0, l1]),
-                            np.array([0, 0, l2]), 0.0)
+    d, sheared, F1, T1, T2 = pc.probe_set_up(kind, gap, LAM)
     centre = np.asarray(offset) * DELTA + 0.013   # off the mesh nodes
     case = os.path.join(work, "gap%g_%s_%s" % (
         gap, kind, "_".join("%g" % o for o in offset)))
     fill_template(os.path.join(HERE, "template"), case, {
         "@L@": "%g" % L, "@L2@": "%g" % (L / 2), "@H2@": "%g" % (L / 2),
-        "@UW@": "%g" % wall, "@N@": "%d" % round(L / DELTA),
+        "@UW@": "%g" % (L / 2 if sheared else 0.0),
+        "@N@": "%d" % round(L / DELTA),
         "@ENDTIME@": "1e-3", "@DT@": "1e-3", "@WRITEINTERVAL@": "1",
         "@LAMBDATOL@": "%g" % LAMBDA_TOL,
         "@X1@": vec(centre - 0.5 * dist * d),
@@ -88,28 +79,11 @@ def probe(gap, kind, offset, work):
     return V, s["angularVelocity"][0], s["angularVelocity"][1]
 
 
-def functions_from(gap, probes):
-    """The eight functions from the four probes of one gap and position
-    (the load probes run with the walls at rest)."""
-    dist = gap + 1 + LAM
-    out = dict.fromkeys(pc.FUNCTIONS, np.nan)
-    V, _, _ = probes["shear45"]
-    out["A"] = 1 - V @ (np.array([1.0, 1.0, 0.0]) / np.sqrt(2)) / (dist / 2)
-    V, W1, W2 = probes["shear0"]
-    out["B"] = 1 - (V[1] + dist / 2) / (dist / 2)
-    out["c1"], out["c2"] = 2 * (W1[2] + 0.5), 2 * (W2[2] + 0.5)
-    if "normal" in probes:
-        out["mn"] = probes["normal"][0][0]
-        V, W1, W2 = probes["tangential"]
-        out["mt"], out["w1"], out["w2"] = -V[1], W1[2], W2[2]
-    return out
-
-
 def measure(positions, jobs):
     work = os.path.join(os.environ["FDM_PROJECT_DIR"], "build", "validation",
                         "pairContactShear")
     offsets = [tuple(o) for o in cell_offsets(positions, 3)]
-    runs = [(g, k, o) for g in GAPS for k in PROBES for o in offsets
+    runs = [(g, k, o) for g in GAPS for k in pc.PROBES for o in offsets
             if k.startswith("shear") or g in CONTACT_GAPS]
     found = {}
     with concurrent.futures.ProcessPoolExecutor(jobs) as pool:
@@ -121,8 +95,9 @@ def measure(positions, jobs):
                                            + futures[fut][:2]), flush=True)
     rows = []
     for g in GAPS:
-        per = [functions_from(g, {k: found[g, k, o] for k in PROBES
-                                  if (g, k, o) in found}) for o in offsets]
+        per = [pc.functions_from_probes(g, LAM, {
+            k: found[g, k, o] for k in pc.PROBES if (g, k, o) in found})
+            for o in offsets]
         mean = {f: np.mean([p[f] for p in per]) for f in pc.FUNCTIONS}
         spread = {f: np.ptp([p[f] for p in per]) for f in pc.FUNCTIONS}
         rows.append((g, mean, spread))

@@ -32,10 +32,21 @@ def viscous_number(phi, phim):
     return (phim / phi - 1) ** 2
 
 
+def model_mu_contact(iv, mu1=MU1, mu2=MU2, i0=I0):
+    """Contact part of eq 14, mu_c = mu_1 + (mu_2 - mu_1)/(1 + I_0/I_v)
+    (constants as arguments for fitting)."""
+    return mu1 + (mu2 - mu1) / (1 + i0 / np.asarray(iv))
+
+
+def model_mu_hydrodynamic(iv, phi):
+    """Hydrodynamic part of eq 14, mu_h = I_v (1 - phi)^-[eta]."""
+    return iv * (1 - phi) ** -INTRINSIC
+
+
 def model_mu(iv, phim):
-    """mu(I_v) = mu_c + mu_h (eq 14)."""
-    phi = phim / (1 + np.sqrt(iv))
-    return MU1 + (MU2 - MU1) / (1 + I0 / iv) + iv * (1 - phi) ** -INTRINSIC
+    """mu(I_v) = mu_c + mu_h (eq 14), phi from eq 15."""
+    return (model_mu_contact(iv)
+            + model_mu_hydrodynamic(iv, phim / (1 + np.sqrt(iv))))
 
 
 def model_eta(phi, phim):

@@ -117,15 +117,11 @@ class ExactPair:
     def motion(self, r_vec, F1, T1, T2):
         """U2 - U1, W1, W2 for loads F1 on sphere 1, -F1 on sphere 2 and
         torques T1, T2, in the ambient shear."""
-        dist = float(np.linalg.norm(r_vec))
-        xi = 2 * dist / (1 + self.lam) - 2
-        R, rhs = ps.grand_resistance(r_vec, S=self.scal(xi), k=0,
-                                     lam=self.lam)
-        x = np.linalg.solve(R, rhs + np.concatenate([F1, -F1, T1, T2]))
-        x1, x2 = -0.5 * r_vec, 0.5 * r_vec
-        U1 = x[0:3] + ps.E_INF @ x1 + np.cross(ps.W_INF, x1)
-        U2 = x[3:6] + ps.E_INF @ x2 + np.cross(ps.W_INF, x2)
-        return U2 - U1, x[6:9] + ps.W_INF, x[9:12] + ps.W_INF
+        xi = 2 * float(np.linalg.norm(r_vec)) / (1 + self.lam) - 2
+        U1, U2, W1, W2 = ps.free_motion(
+            r_vec, S=self.scal(xi), k=0, lam=self.lam,
+            loads=np.concatenate([F1, -F1, T1, T2]))
+        return U2 - U1, W1, W2
 
 
 # The pair's linear response, by symmetry eight functions of the gap:
@@ -137,26 +133,60 @@ class ExactPair:
 FUNCTIONS = ("A", "B", "c1", "c2", "mn", "mt", "w1", "w2")
 
 
-def pair_functions(motion, gap, lam):
-    """The eight functions at surface gap `gap` from a pair mobility
-    `motion(r, F1, T1, T2)` (in shear) by four probes: the pair along x
-    (B, c_i; loads) and at 45 degrees (A).  The loads are separated from
-    the shear by subtracting the unloaded motion."""
+PROBES = ("shear45", "shear0", "normal", "tangential")
+
+
+def probe_set_up(kind, gap, lam):
+    """One probe of the eight functions at surface gap `gap`: the branch
+    direction d (r = x2 - x1 along d), whether the ambient shear acts, and
+    the loads F1 (on sphere 1, -F1 on sphere 2), T1, T2.  A comes from the
+    pair at 45 degrees in shear, B and the c_i from the pair along x in
+    shear, the load functions from a unit normal and a unit tangential pair
+    load (with its torques l_i d x F_t) on the pair along x without shear."""
     dist = gap + 1 + lam
     l1, l2 = dist / (1 + lam), lam * dist / (1 + lam)
     zero = np.zeros(3)
     ex, ey, ez = np.eye(3)
-    r45 = dist * np.array([1, 1, 0]) / math.sqrt(2)
-    V45, _, _ = motion(r45, zero, zero, zero)
-    A = 1 - V45 @ r45 / dist / (dist / 2)
-    r0 = dist * ex
-    V0, W1, W2 = motion(r0, zero, zero, zero)
-    B = 1 - (V0[1] + dist / 2) / (dist / 2)
-    c1, c2 = 2 * (W1[2] + 0.5), 2 * (W2[2] + 0.5)
-    Vn, _, _ = motion(r0, -ex, zero, zero)
-    Vt, W1t, W2t = motion(r0, ey, l1 * ez, l2 * ez)
-    return {"A": A, "B": B, "c1": c1, "c2": c2, "mn": (Vn - V0)[0],
-            "mt": -(Vt - V0)[1], "w1": (W1t - W1)[2], "w2": (W2t - W2)[2]}
+    if kind == "shear45":
+        return np.array([1.0, 1.0, 0.0]) / math.sqrt(2), True, zero, zero, zero
+    if kind == "shear0":
+        return ex, True, zero, zero, zero
+    if kind == "normal":
+        return ex, False, -ex, zero, zero
+    return ex, False, ey, l1 * ez, l2 * ez
+
+
+def functions_from_probes(gap, lam, probes):
+    """The eight functions from the probes' (U2 - U1, W1, W2), a dict
+    kind -> motion (the load probes without shear; NaN for the load
+    functions when those probes are missing)."""
+    dist = gap + 1 + lam
+    out = dict.fromkeys(FUNCTIONS, np.nan)
+    V, _, _ = probes["shear45"]
+    out["A"] = 1 - V @ probe_set_up("shear45", gap, lam)[0] / (dist / 2)
+    V, W1, W2 = probes["shear0"]
+    out["B"] = 1 - (V[1] + dist / 2) / (dist / 2)
+    out["c1"], out["c2"] = 2 * (W1[2] + 0.5), 2 * (W2[2] + 0.5)
+    if "normal" in probes:
+        out["mn"] = probes["normal"][0][0]
+        V, W1, W2 = probes["tangential"]
+        out["mt"], out["w1"], out["w2"] = -V[1], W1[2], W2[2]
+    return out
+
+
+def pair_functions(motion, gap, lam):
+    """The eight functions at surface gap `gap` from a pair mobility
+    `motion(r, F1, T1, T2)`, which always includes the shear: the load
+    probes subtract the unloaded motion."""
+    dist = gap + 1 + lam
+    probes = {}
+    for kind in PROBES:
+        d, _, F1, T1, T2 = probe_set_up(kind, gap, lam)
+        probes[kind] = motion(dist * d, F1, T1, T2)
+    sheared = probes["shear0"]
+    for kind in ("normal", "tangential"):
+        probes[kind] = tuple(a - b for a, b in zip(probes[kind], sheared))
+    return functions_from_probes(gap, lam, probes)
 
 
 class FunctionPair:
@@ -186,10 +216,7 @@ class FunctionPair:
         d = r_vec / dist
         gap = dist - (1 + self.lam)
         f = {k: self.value(k, gap) for k in FUNCTIONS}
-        Er = ps.E_INF @ r_vec
-        dEr = d @ Er
-        V = (np.cross(ps.W_INF, r_vec) + Er
-             - (f["A"] * dEr * d + f["B"] * (Er - dEr * d)))
+        V = ps._bg_velocity(r_vec, f["A"], f["B"])
         spin = np.cross(d, ps.E_INF @ d)
         W1 = ps.W_INF + f["c1"] * spin
         W2 = ps.W_INF + f["c2"] * spin

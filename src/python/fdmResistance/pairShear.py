@@ -180,11 +180,15 @@ def grand_resistance(r_vec, E=E_INF, xc=True, S=None, k=0, lam=LAM):
     return R, rhs
 
 
-def free_motion(r_vec, E=E_INF, W=W_INF, xc=True, S=None, k=0, lam=LAM):
-    """Velocities of the two free spheres (a1 = 1, a2 = lam), x1 = -r/2,
-    x2 = +r/2: returns U1, U2, W1, W2 (ambient linear flow W x x + E.x)."""
+def free_motion(r_vec, E=E_INF, W=W_INF, xc=True, S=None, k=0, lam=LAM,
+                loads=None):
+    """Velocities of the two spheres (a1 = 1, a2 = lam), x1 = -r/2,
+    x2 = +r/2, free or under external loads (F1, F2, T1, T2; 12 values):
+    returns U1, U2, W1, W2 (ambient linear flow W x x + E.x)."""
     r_vec = np.asarray(r_vec, dtype=float)
     R, rhs = grand_resistance(r_vec, E, xc, S, k, lam)
+    if loads is not None:
+        rhs = rhs + loads
     sol = np.linalg.solve(R, rhs)
     x1, x2 = -0.5 * r_vec, 0.5 * r_vec
     U1 = sol[0:3] + np.cross(W, x1) + E @ x1
