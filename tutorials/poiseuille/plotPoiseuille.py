@@ -120,9 +120,23 @@ def migration(run, layer, phij, ax):
           f" {change[0][0]:+.3f} (SBM {change[0][1]:+.3f}), outer core"
           f" {change[1][0]:+.3f} (SBM {change[1][1]:+.3f})")
 
+    yst, ps, _ = sbm.poiseuille_profile(sigma22, phi_core, phij, y_max=y_edge)
+    # Steady state (eqs F.10-F.11) on the same bins; the last two windows
+    # tell whether the run has reached it
+    steady = np.interp(np.abs(fine - Ly / 2) / Ly, yst, ps)
+    steady = np.where(core, bin_mean(steady, fine, np.clip(
+        run.edges, layer, Ly - layer)), np.nan)
+    drift = np.abs(phis[-1] - phis[-2])[core].max() if len(phis) > 1 else 0
+    rms = np.sqrt(np.mean((phis[-1] - steady)[core]**2))
+    print(f"  steady SBM (eqs F.10-F.11): centre {steady[centre].mean():.3f},"
+          f" outer core {steady[outer].mean():.3f}; last window against it:"
+          f" centre {phis[-1][centre].mean() - steady[centre].mean():+.3f},"
+          f" outer core {phis[-1][outer].mean() - steady[outer].mean():+.3f},"
+          f" rms over the core bins {rms:.3f}; largest change of a core bin"
+          f" between the last two windows {drift:.3f}")
+
     ax.plot(sbms[0], yb, "--", color="0.5", label="SBM eq F.8b, first window")
     ax.plot(sbms[-1], yb, "k--", label="SBM eq F.8b, last window")
-    yst, ps, _ = sbm.poiseuille_profile(sigma22, phi_core, phij, y_max=y_edge)
     ax.plot(ps, Ly / 2 + yst * Ly, "k:", lw=0.8, label="SBM steady")
     ax.plot(ps, Ly / 2 - yst * Ly, "k:", lw=0.8)
     ax.axvline(phi_core, color="0.6", lw=0.6)
