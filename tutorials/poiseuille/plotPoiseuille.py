@@ -145,7 +145,7 @@ def migration(run, layer, phij, ax):
     ax.set(xlabel=r"$\phi$ (a$_1$ bins, eq 6.5)", ylabel=r"$y/a_1$",
            title="migration")
     ax.legend(fontsize=7)
-    return phis[-1]
+    return phis[-1], steady
 
 
 def velocity(run, U, phi, phij, ax):
@@ -175,11 +175,11 @@ def velocity(run, U, phi, phij, ax):
     ax.legend(fontsize=7)
 
 
-def x_momentum(run, U, hp, c, ax):
+def x_momentum(run, gamma, hp, c, ax):
     """Sigma_xy(y) = eta dU/dy + Sigma^hp_xy + Sigma^c_xy (eqs 6.13,
     6.18-6.19) against eq F.6a, and the whole-channel balance."""
     yb, Ly, G = run.yb, run.Ly, run.G
-    fluid_xy = run.eta * cf.shear_rate_bins(U, run.edges, Ly)
+    fluid_xy = run.eta * gamma
     sxy = fluid_xy + hp[:, 0, 1] + c[:, 0, 1]
     inner = (yb > 1) & (yb < Ly - 1)
     slope, level = cf.shear_stress_line(yb, sxy, Ly, inner)
@@ -232,6 +232,23 @@ def y_momentum(run, hp, c, ax):
     ax.legend(fontsize=7)
 
 
+def write_profiles(run, phi, U, gamma, hp, c, steady):
+    """The last window's profiles on the a1 bins (eq 6.5) in
+    poiseuilleProfiles.dat: phi, u_p (eq 6.4), the suspension velocity and
+    shear rate, the particle hydrodynamic and contact stresses (xy, yy) and
+    the steady SBM phi (eqs F.10-F.11; NaN in the wall layers)."""
+    _, _, up = run.cs.profiles(run.nb, run.windows[-1])
+    Ub = bin_mean(U, run.yc, run.edges)
+    out = os.path.join(run.case, "poiseuilleProfiles.dat")
+    np.savetxt(out, np.column_stack([
+        run.yb, phi, up, Ub, gamma, hp[:, 0, 1], c[:, 0, 1], hp[:, 1, 1],
+        c[:, 1, 1], steady]), fmt="%.6g", header=(
+        f"last window t* {run.bounds[-2]:.2f}-{run.bounds[-1]:.2f}, a1 bins\n"
+        "y phi u_p U dU/dy SigmaHp_xy SigmaC_xy SigmaHp_yy SigmaC_yy"
+        " phi_SBM_steady"))
+    print(f"  wrote {out}")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("case", nargs="?", default=".")
@@ -246,10 +263,12 @@ def main():
 
     run = Run(args.case, args.windows)
     fig, ax = plt.subplots(1, 4, figsize=(17, 4.2))
-    phi = migration(run, args.layer, args.phij, ax[0])
+    phi, steady = migration(run, args.layer, args.phij, ax[0])
     U = cf.mean_layers(run.case, "U", run.written, run.n)[:, 0]
+    gamma = cf.shear_rate_bins(U, run.edges, run.Ly)
     hp, c = run.cs.stress_profiles(run.nb, run.windows[-1])
-    x_momentum(run, U, hp, c, ax[2])
+    write_profiles(run, phi, U, gamma, hp, c, steady)
+    x_momentum(run, gamma, hp, c, ax[2])
     y_momentum(run, hp, c, ax[3])
     velocity(run, U, phi, args.phij, ax[1])
     fig.tight_layout()
