@@ -27,10 +27,19 @@ z), frameInvariant sub-grid lubrication, one position in a cell by
 default, lambda residual 3e-6 (about 60 outer iterations; 1e-7 takes
 twice as many).  Trajectories start at r = x2 - x1 = (-6, r_y0, 0).
 
-    ./Allrun [--ry0 0.25,0.5,1] [--positions 2] [--jobs 2]
+The cell walls.  A free pair's stresslets reflect from the walls 4-5 a1
+away and lower A and B (at gap 4 by a third).  The shear functions are
+therefore measured again at one position in 16 a1 and 20 a1 cells
+(CELL_RUNS, cellSize.dat) and the change from the 12 a1 cell at that
+position is added to the 12 a1 set (interpolated in ln gap): the mobility
+'solver, largest cells', on which the verdict is taken.
 
-writes functions.dat, report.md and pairContactShear.png here (cases in
-build/validation/pairContactShear).  About 30 min on 2 cores.
+    ./Allrun [--ry0 0.25,0.5,1] [--positions 2] [--jobs 2] [--cell-sizes]
+             [--report-only]
+
+writes functions.dat (cellSize.dat with --cell-sizes), report.md and
+pairContactShear.png here (cases in build/validation/pairContactShear).
+About 30 min on 2 cores, and about 2 h more for the cell sizes.
 """
 
 import argparse
@@ -54,21 +63,28 @@ GAPS = (0.0035, 0.005, 0.01, 0.03, 0.1, 0.3, 1.0, 4.0)
 CONTACT_GAPS = (0.0035, 0.005)   # where the load probes are needed
 X0 = -6.0
 LAMBDA_TOL = 3e-6   # outer-loop lambda residual of the one steady solve
+# The cell walls: the shear functions at one position in larger cells
+CELL_RUNS = ((12.0, (0.03, 0.3, 1.0, 4.0)), (16.0, (0.03, 0.3, 1.0, 4.0)),
+             (20.0, (1.0, 4.0)))
+CELL_OFFSET = (0.0, 0.0, 0.0)
+SHEAR = ("A", "B", "c1", "c2")
 TOL_OFFSET = 0.03      # exit offset, relative
 TOL_TRAJECTORY = 0.05  # r_y, in a1
 
 
-def probe(gap, kind, offset, work):
-    """U2 - U1, W1, W2 of one frozen configuration (pairContact's probe)."""
+def probe(gap, kind, offset, work, cell=L):
+    """U2 - U1, W1, W2 of one frozen configuration (pairContact's probe)
+    in a Couette cell of side `cell`."""
     dist = gap + 1 + LAM
     d, sheared, F1, T1, T2 = pc.probe_set_up(kind, gap, LAM)
     centre = np.asarray(offset) * DELTA + 0.013   # off the mesh nodes
     case = os.path.join(work, "gap%g_%s_%s" % (
         gap, kind, "_".join("%g" % o for o in offset)))
     fill_template(os.path.join(HERE, "template"), case, {
-        "@L@": "%g" % L, "@L2@": "%g" % (L / 2), "@H2@": "%g" % (L / 2),
-        "@UW@": "%g" % (L / 2 if sheared else 0.0),
-        "@N@": "%d" % round(L / DELTA),
+        "@L@": "%g" % cell, "@L2@": "%g" % (cell / 2),
+        "@H2@": "%g" % (cell / 2),
+        "@UW@": "%g" % (cell / 2 if sheared else 0.0),
+        "@N@": "%d" % round(cell / DELTA),
         "@ENDTIME@": "1e-3", "@DT@": "1e-3", "@WRITEINTERVAL@": "1",
         "@LAMBDATOL@": "%g" % LAMBDA_TOL,
         "@X1@": vec(centre - 0.5 * dist * d),
@@ -112,6 +128,67 @@ def measure(positions, jobs):
                     + "\n")
 
 
+def measure_cells(jobs):
+    """The shear functions at one position (CELL_OFFSET) in the cells of
+    CELL_RUNS, into cellSize.dat (rows already there are kept)."""
+    path = os.path.join(HERE, "cellSize.dat")
+    done = {(row[0], row[1]) for row in read_cells()} \
+        if os.path.exists(path) else set()
+    runs = [(c, g, k) for c, gaps in CELL_RUNS for g in gaps
+            for k in ("shear0", "shear45") if (c, g) not in done]
+    found = {}
+    with concurrent.futures.ProcessPoolExecutor(jobs) as pool:
+        futures = {pool.submit(probe, g, k, CELL_OFFSET, os.path.join(
+            os.environ["FDM_PROJECT_DIR"], "build", "validation",
+            "pairContactShear", "cell%g" % c), c): (c, g, k)
+            for c, g, k in runs}
+        for i, fut in enumerate(concurrent.futures.as_completed(futures)):
+            found[futures[fut]] = fut.result()
+            print("  [%d/%d] cell %g gap %g %s" % ((i + 1, len(runs))
+                                                   + futures[fut]),
+                  flush=True)
+    new = not os.path.exists(path)
+    with open(path, "a") as f:
+        if new:
+            f.write("# cell gap A B c1 c2  (shear functions at offset %s"
+                    " Delta in cells of side `cell` a1)\n"
+                    % " ".join("%g" % o for o in CELL_OFFSET))
+        for c, g in sorted({(c, g) for c, g, _ in found}):
+            fn = pc.functions_from_probes(g, LAM, {
+                k: found[c, g, k] for k in ("shear0", "shear45")})
+            f.write("%g %g " % (c, g) + " ".join("%.8g" % fn[k] for k in
+                                               SHEAR) + "\n")
+
+
+def read_cells():
+    """Rows (cell, gap, A, B, c1, c2) of cellSize.dat."""
+    return np.loadtxt(os.path.join(HERE, "cellSize.dat"), ndmin=2)
+
+
+def wall_corrections(cells, extrapolate):
+    """Change of each shear function from the 12 a1 cell to the largest
+    cell measured at the same position, per gap of cellSize.dat; with
+    `extrapolate`, on to L -> infinity as F = F_inf + c L^-3 (the decay of
+    a force dipole's images) from the two largest cells.  Returns (gaps,
+    {function: correction})."""
+    gaps = np.unique(cells[:, 1])
+    out = {f: [] for f in SHEAR}
+    for g in gaps:
+        rows = cells[cells[:, 1] == g]
+        rows = rows[np.argsort(rows[:, 0])]
+        base, top = rows[0], rows[-1]
+        if base[0] != L:
+            raise SystemExit("cellSize.dat: no %g a1 row at gap %g" % (L, g))
+        for k, f in enumerate(SHEAR):
+            d = top[2 + k] - base[2 + k]
+            if extrapolate and len(rows) > 1:
+                prev = rows[-2]
+                d += (top[2 + k] - prev[2 + k]) * top[0]**-3 / (
+                    prev[0]**-3 - top[0]**-3)
+            out[f].append(d)
+    return gaps, {f: np.array(v) for f, v in out.items()}
+
+
 def read_functions():
     data = np.loadtxt(os.path.join(HERE, "functions.dat"), ndmin=2)
     n = len(pc.FUNCTIONS)
@@ -125,11 +202,16 @@ def main(argv):
     p.add_argument("--ry0", default="0.25,0.5,1")
     p.add_argument("--positions", type=int, default=1)
     p.add_argument("--jobs", type=int, default=2)
+    p.add_argument("--cell-sizes", action="store_true",
+                   help="also measure the shear functions in the larger"
+                        " cells of CELL_RUNS (about 2 h on 2 cores)")
     p.add_argument("--report-only", action="store_true",
                    help="integrate and report from the stored functions.dat")
     opts = p.parse_args(argv)
     if not opts.report_only:
         measure(opts.positions, opts.jobs)
+    if opts.cell_sizes:
+        measure_cells(opts.jobs)
     gaps, measured, spread = read_functions()
     exact = pc.ExactPair(LAM)
     at_gaps = [pc.pair_functions(exact.motion, g, LAM) for g in gaps]
@@ -140,11 +222,14 @@ def main(argv):
     dense = np.exp(np.linspace(np.log(1e-3), np.log(8.0), 60))
     exact_dense = [pc.pair_functions(exact.motion, g, LAM) for g in dense]
 
-    def solver_pair(which):
+    def solver_pair(which, walls=None):
         values = {}
         for f in pc.FUNCTIONS:
             e = np.array([v[f] for v in exact_dense])
             m = np.asarray(measured[f])
+            if walls is not None and f in walls[1]:
+                m = m + np.interp(np.log(gaps), np.log(walls[0]),
+                                  walls[1][f])
             ref = np.array([v[f] for v in at_gaps])
             ok = np.isfinite(m)
             if f not in which or not ok.any():
@@ -156,11 +241,18 @@ def main(argv):
                 values[f] = e + np.interp(np.log(dense), np.log(gaps[ok]),
                                           m[ok] - ref[ok])
         return pc.FunctionPair(dense, values, LAM)
-    shear, loads = ("A", "B", "c1", "c2"), ("mn", "mt", "w1", "w2")
+    shear, loads = SHEAR, ("mn", "mt", "w1", "w2")
     pairs = {"exact": exact,
              "solver": solver_pair(pc.FUNCTIONS),
              "solver shear functions only": solver_pair(shear),
              "solver load functions only": solver_pair(loads)}
+    cells = None
+    if os.path.exists(os.path.join(HERE, "cellSize.dat")):
+        cells = read_cells()
+        pairs["solver, largest cells"] = solver_pair(
+            pc.FUNCTIONS, wall_corrections(cells, False))
+        pairs["solver, cell walls extrapolated"] = solver_pair(
+            pc.FUNCTIONS, wall_corrections(cells, True))
     law = pc.ContactLaw(lam=LAM)
     tracks = {}
     for y0 in [float(v) for v in opts.ry0.split(",")]:
@@ -168,7 +260,7 @@ def main(argv):
             tracks[y0, name] = pc.trajectory(X0, y0, pair, law)
     import report
     ok = report.write(HERE, gaps, measured, spread, at_gaps, tracks,
-                      TOL_OFFSET, TOL_TRAJECTORY)
+                      TOL_OFFSET, TOL_TRAJECTORY, cells, exact)
     return 0 if ok else 1
 
 
