@@ -32,8 +32,8 @@ def cell_table(cells, exact):
              "exact values in the last row of each gap.", "",
              "| gap | L/a1 | A | B | c1 | c2 |", "|---|---|---|---|---|---|"]
     for g in np.unique(cells[:, 1]):
-        for row in cells[cells[:, 1] == g][np.argsort(
-                cells[cells[:, 1] == g][:, 0])]:
+        rows = cells[cells[:, 1] == g]
+        for row in rows[np.argsort(rows[:, 0])]:
             lines.append("| %g | %g | " % (g, row[0]) + " | ".join(
                 "%.4f" % v for v in row[2:]) + " |")
         ex = pc.pair_functions(exact.motion, g, 1.4)
@@ -82,10 +82,7 @@ def write(here, gaps, measured, spread, at_gaps, tracks, tol_offset,
     if cells is not None:
         lines += cell_table(cells, exact)
     verdict = ("solver, largest cells" if cells is not None else "solver")
-    names = sorted({n for _, n in tracks}, key=[
-        "exact", "solver", "solver shear functions only",
-        "solver load functions only", "solver, largest cells",
-        "solver, cell walls extrapolated"].index)
+    names = list(dict.fromkeys(n for _, n in tracks))   # run.py's order
     lines += [
               "## Trajectories from r = (-6, r_y0, 0)", "",
               "| r_y0 | mobility | exit offset r_y(+6) | minimum gap "
