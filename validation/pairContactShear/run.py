@@ -68,6 +68,8 @@ CELL_RUNS = ((12.0, (0.03, 0.3, 1.0, 4.0)), (16.0, (0.03, 0.3, 1.0, 4.0)),
              (20.0, (1.0, 4.0)))
 CELL_OFFSET = (0.0, 0.0, 0.0)
 SHEAR = ("A", "B", "c1", "c2")
+WORK = os.path.join(os.environ["FDM_PROJECT_DIR"], "build", "validation",
+                    "pairContactShear")
 TOL_OFFSET = 0.03      # exit offset, relative
 TOL_TRAJECTORY = 0.05  # r_y, in a1
 
@@ -95,20 +97,27 @@ def probe(gap, kind, offset, work, cell=L):
     return V, s["angularVelocity"][0], s["angularVelocity"][1]
 
 
-def measure(positions, jobs):
-    work = os.path.join(os.environ["FDM_PROJECT_DIR"], "build", "validation",
-                        "pairContactShear")
-    offsets = [tuple(o) for o in cell_offsets(positions, 3)]
-    runs = [(g, k, o) for g in GAPS for k in pc.PROBES for o in offsets
-            if k.startswith("shear") or g in CONTACT_GAPS]
+def run_probes(tasks, jobs):
+    """probe(gap, kind, offset, work, cell) for every task (a dict key ->
+    those arguments) on `jobs` processes; returns key -> result."""
     found = {}
     with concurrent.futures.ProcessPoolExecutor(jobs) as pool:
-        futures = {pool.submit(probe, g, k, o, work): (g, k, o)
-                   for g, k, o in runs}
+        futures = {pool.submit(probe, *args): key
+                   for key, args in tasks.items()}
         for i, fut in enumerate(concurrent.futures.as_completed(futures)):
-            found[futures[fut]] = fut.result()
-            print("  [%d/%d] gap %g %s" % ((i + 1, len(runs))
-                                           + futures[fut][:2]), flush=True)
+            key = futures[fut]
+            found[key] = fut.result()
+            gap, kind, _, _, cell = tasks[key]
+            print("  [%d/%d] cell %g gap %g %s" % (i + 1, len(tasks), cell,
+                                                   gap, kind), flush=True)
+    return found
+
+
+def measure(positions, jobs):
+    offsets = [tuple(o) for o in cell_offsets(positions, 3)]
+    found = run_probes({(g, k, o): (g, k, o, WORK, L) for g in GAPS
+                        for k in pc.PROBES for o in offsets
+                        if k.startswith("shear") or g in CONTACT_GAPS}, jobs)
     rows = []
     for g in GAPS:
         per = [pc.functions_from_probes(g, LAM, {
@@ -134,19 +143,10 @@ def measure_cells(jobs):
     path = os.path.join(HERE, "cellSize.dat")
     done = {(row[0], row[1]) for row in read_cells()} \
         if os.path.exists(path) else set()
-    runs = [(c, g, k) for c, gaps in CELL_RUNS for g in gaps
-            for k in ("shear0", "shear45") if (c, g) not in done]
-    found = {}
-    with concurrent.futures.ProcessPoolExecutor(jobs) as pool:
-        futures = {pool.submit(probe, g, k, CELL_OFFSET, os.path.join(
-            os.environ["FDM_PROJECT_DIR"], "build", "validation",
-            "pairContactShear", "cell%g" % c), c): (c, g, k)
-            for c, g, k in runs}
-        for i, fut in enumerate(concurrent.futures.as_completed(futures)):
-            found[futures[fut]] = fut.result()
-            print("  [%d/%d] cell %g gap %g %s" % ((i + 1, len(runs))
-                                                   + futures[fut]),
-                  flush=True)
+    found = run_probes({
+        (c, g, k): (g, k, CELL_OFFSET, os.path.join(WORK, "cell%g" % c), c)
+        for c, gaps in CELL_RUNS for g in gaps for k in ("shear0", "shear45")
+        if (c, g) not in done}, jobs)
     new = not os.path.exists(path)
     with open(path, "a") as f:
         if new:
