@@ -216,7 +216,7 @@ class FunctionPair:
         d = r_vec / dist
         gap = dist - (1 + self.lam)
         f = {k: self.value(k, gap) for k in FUNCTIONS}
-        V = ps._bg_velocity(r_vec, f["A"], f["B"])
+        V = ps.bg_velocity(r_vec, f["A"], f["B"])
         spin = np.cross(d, ps.E_INF @ d)
         W1 = ps.W_INF + f["c1"] * spin
         W2 = ps.W_INF + f["c2"] * spin

@@ -206,10 +206,10 @@ def relative_velocity(r_vec, exact=False):
         return U2 - U1
     r = float(np.linalg.norm(r_vec))
     A, B = AB_interp(r)
-    return _bg_velocity(r_vec, A, B)
+    return bg_velocity(r_vec, A, B)
 
 
-def _bg_velocity(r_vec, A, B):
+def bg_velocity(r_vec, A, B):
     r = np.linalg.norm(r_vec)
     d = r_vec / r
     Er = E_INF @ r_vec
@@ -327,7 +327,7 @@ def _integrate(x0, y0, z0, rtol, atol, exact, max_time, AB=None):
 
     def rhs(t, y):
         if AB is not None:
-            return _bg_velocity(y, *AB(float(np.linalg.norm(y))))
+            return bg_velocity(y, *AB(float(np.linalg.norm(y))))
         return relative_velocity(y, exact=exact)
 
     def done(t, y):

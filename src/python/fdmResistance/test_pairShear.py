@@ -62,7 +62,7 @@ class Kinematics(unittest.TestCase):
             rv *= (2.0 + math.exp(rng.uniform(-8, 2))) / np.linalg.norm(rv)
             A, B = ps.AB_exact(np.array([np.linalg.norm(rv)]))
             V = ps.relative_velocity(rv, exact=True)
-            np.testing.assert_allclose(V, ps._bg_velocity(rv, A[0], B[0]),
+            np.testing.assert_allclose(V, ps.bg_velocity(rv, A[0], B[0]),
                                        rtol=0, atol=1e-12)
 
     def test_special_orientations(self):
