@@ -13,7 +13,6 @@ mid-points and prints the worst case.
 """
 
 import argparse
-import math
 import os
 import sys
 
