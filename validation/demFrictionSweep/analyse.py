@@ -163,7 +163,8 @@ def phi_family(rows, lines):
                    r["eta_r"], r["eta_rErr"], model_eta(r["phi"], phim),
                    r["phi"] * (1 + np.sqrt(r["Iv"]))))
         if len(sel) >= 4:
-            p, cov = curve_fit(model_mu_contact, x, [r["muContact"] for r in sel],
+            p, cov = curve_fit(model_mu_contact, x,
+                               [r["muContact"] for r in sel],
                                p0=(MU1, MU2, I0), bounds=(0, [2, 5, 1]))
             err = np.sqrt(np.diag(cov))
             lines += ["", "Contact part fitted with eq 14's form: mu_1 = "
