@@ -148,31 +148,51 @@ def migration(run, layer, phij, ax):
     return phis[-1], steady
 
 
-def velocity(run, U, phi, phij, ax):
+def velocity(run, U, phi, phij, layer, ax):
     """Blunting (centre over mean velocity, 1.5 for the parabola) against
-    eq F.8a with the measured phi(y) (mirror-averaged a1 bins) and the
-    Morris-Boulay viscosity: the velocity local rheology predicts."""
+    eq F.8a with the measured phi(y) (mirror-averaged a1 bins) and two
+    viscosity closures: Morris-Boulay and the thesis' Maron-Pierce fit (eq
+    4.12, alpha = 0.803): the velocity local rheology predicts."""
     Ly, nb, yc = run.Ly, run.nb, run.yc
     newtonian = abs(run.G) / (2 * run.eta) * yc * (Ly - yc)
     _, _, up = run.cs.profiles(nb, run.windows[-1])
-    eta_s, _ = sbm.morris_boulay_poiseuille(phij)
     y_half = np.linspace(0, 0.5, 501)
     phi_sym = 0.5 * (phi + phi[::-1])
     phi_half = phi_sym[np.minimum((Ly / 2 + y_half * Ly).astype(int), nb - 1)]
-    u_sbm = sbm.poiseuille_velocity(y_half, phi_half, eta_s) * run.gamma0 * Ly
-    mean_sbm = np.trapz(u_sbm, y_half) / 0.5
     print(f"  velocity (last window): centre/mean {U.max() / U.mean():.3f}"
           f" (parabola 1.5), mean {U.mean():.4f} (particle-free"
-          f" {newtonian.mean():.4f}; eq F.8a with the measured phi(y):"
-          f" centre/mean {u_sbm[0] / mean_sbm:.3f}, mean {mean_sbm:.4f})")
+          f" {newtonian.mean():.4f}); eq F.8a with the measured phi(y):")
     ax.plot(U, yc, "-", label="suspension (solver U)")
     ax.plot(up, run.yb, "o", ms=4, mfc="none", label="particles (eq 6.4)")
     ax.plot(newtonian, yc, "k--", lw=0.8, label="particle-free parabola")
-    ax.plot(u_sbm, Ly / 2 + y_half * Ly, "k:", lw=0.8,
-            label=r"eq F.8a, measured $\phi(y)$, Morris-Boulay")
-    ax.plot(u_sbm, Ly / 2 - y_half * Ly, "k:", lw=0.8)
+    closures = (("Morris-Boulay", sbm.morris_boulay_poiseuille(phij)[0], ":"),
+                ("Maron-Pierce eq 4.12", sbm.maron_pierce_poiseuille(phij),
+                 "-."))
+    # The SBM's own domain, the core (thesis 6.3.2): the rise of the
+    # velocity from the core's edges to the centre, the edges' measured
+    # velocity (the wall layers' slip and ordering) taken as given
+    core = y_half <= 0.5 - layer / Ly
+    u_edge = np.interp([layer, Ly - layer], yc, U).mean()
+    u_centre = np.interp(Ly / 2, yc, U)
+    for name, eta_s, style in closures:
+        u_sbm = (sbm.poiseuille_velocity(y_half, phi_half, eta_s)
+                 * run.gamma0 * Ly)
+        mean_sbm = np.trapz(u_sbm, y_half) / 0.5
+        rise = (sbm.poiseuille_velocity(y_half[core], phi_half[core], eta_s)
+                * run.gamma0 * Ly)
+        print(f"    {name}: centre/mean {u_sbm[0] / mean_sbm:.3f}, mean"
+              f" {mean_sbm:.4f} (solver/model {U.mean() / mean_sbm:.3f});"
+              f" core (from {layer:g} a1) rise to the centre {rise[0]:.4f}"
+              f" against the solver's {u_centre - u_edge:.4f}")
+        ax.plot(u_sbm, Ly / 2 + y_half * Ly, "k" + style, lw=0.8,
+                label=rf"eq F.8a, measured $\phi(y)$, {name}")
+        ax.plot(u_sbm, Ly / 2 - y_half * Ly, "k" + style, lw=0.8)
+        ax.plot(u_edge + rise, Ly / 2 + y_half[core] * Ly, "r" + style,
+                lw=1, label=f"same, core from its edges' U ({name})")
+        ax.plot(u_edge + rise, Ly / 2 - y_half[core] * Ly, "r" + style,
+                lw=1)
     ax.set(xlabel=r"$u_x$", title=f"velocity, t* > {run.bounds[-2]:.1f}")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=6, loc="upper right", framealpha=0.6)
 
 
 def x_momentum(run, gamma, hp, c, ax):
@@ -270,7 +290,7 @@ def main():
     write_profiles(run, phi, U, gamma, hp, c, steady)
     x_momentum(run, gamma, hp, c, ax[2])
     y_momentum(run, hp, c, ax[3])
-    velocity(run, U, phi, args.phij, ax[1])
+    velocity(run, U, phi, args.phij, args.layer, ax[1])
     fig.tight_layout()
     out = os.path.join(args.case, "poiseuille.png")
     fig.savefig(out, dpi=110)

@@ -38,6 +38,7 @@ import inspect
 import numpy as np
 from scipy import integrate, optimize
 
+from fdmPost.rheology import maron_pierce
 from fdmPost.rheology import morris_boulay as morris_boulay_shear
 
 PHI_RCP = 0.64
@@ -222,3 +223,17 @@ def morris_boulay_poiseuille(phi_j):
     def sigma22(phi):
         return morris_boulay(below(phi), 2, phi_j) / eta_s(phi)
     return eta_s, sigma22
+
+
+def maron_pierce_poiseuille(phi_j, alpha=0.803):
+    """The thesis' own viscosity fit (eq 4.12, alpha = 0.803, from its
+    Couette runs at mu = 0.5) as the eta_s of eq F.8a, infinite from phi_J
+    on (the plug, where the fit's (1 - phi/phi_J)^-2 would turn finite
+    again).  Only the velocity depends on it: phi(y) of eqs F.8b and F.10
+    depends on Sigma_22 alone."""
+    def eta_s(phi):
+        phi = np.asarray(phi, float)
+        with np.errstate(divide="ignore"):
+            return np.where(phi < phi_j, maron_pierce(phi, alpha, phi_j),
+                            np.inf)
+    return eta_s

@@ -96,6 +96,16 @@ class Poiseuille(unittest.TestCase):
                                     lambda p: np.ones_like(p))
         self.assertLess(np.abs(u - 2 * (0.25 - y**2)).max(), 1e-7)
 
+    def test_maron_pierce_velocity_at_uniform_phi(self):
+        # uniform phi: the parabola divided by eq 4.12, centre
+        # 0.5 (1 - phi/phi_J)^2/alpha; no shear from phi_J on
+        eta_s = sbm.maron_pierce_poiseuille(0.592)
+        y = np.linspace(0, 0.5, 2001)
+        u = sbm.poiseuille_velocity(y, np.full_like(y, 0.45), eta_s)
+        self.assertAlmostEqual(u[0], 0.5 * (1 - 0.45 / 0.592)**2 / 0.803,
+                               delta=1e-7)
+        self.assertTrue(np.all(np.isinf(eta_s(np.array([0.592, 0.7])))))
+
     def test_plug_does_not_shear(self):
         eta_s, sigma22 = sbm.morris_boulay_poiseuille(0.592)
         y, phi, _ = sbm.poiseuille_profile(sigma22, 0.5, 0.592)
