@@ -5,9 +5,13 @@
 #    density gives (0.0499 at Sh 2);
 #  - the floor spheres stay at their height and particleState holds the
 #    mobile flags and the stresslets by part;
+#  - the Acrivos number (9/2) a Sh/h_0 given instead, h_0 = V/phi_m from
+#    the mobile spheres' volume per floor area computed here from the
+#    particle list, gives the same Shields number;
 #  - bad input stops with a message naming the keyword: an open direction
 #    that is not x, y or z; a fixed group absent from the particle list;
-#    a sphere leaving the cell through the open top (gravity upwards).
+#    a sphere leaving the cell through the open top (gravity upwards); an
+#    Acrivos number without packingFraction.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir resuspension)
@@ -29,6 +33,32 @@ setUp "$work/run"
 grep -q "Shields number 2, inertial number gammaDot sqrt(a/g) 0.049" \
     "$work/run/log.lubricatedDEMFoam" \
     || { echo "FAILED: Shields/inertial numbers not printed"; exit 1; }
+
+# Sh 2 as an Acrivos number: V over the 12 x 12 floor, phi_m 0.58
+setUp "$work/acrivos"
+acrivos=$("$FDM_PYTHON" - "$work/acrivos/constant/particleList" <<'PY'
+import re, sys
+import numpy as np
+text = open(sys.argv[1]).read()
+rows = re.findall(r"^\((\w+) \([^)]*\) (\S+)\)$", text, re.M)
+r = np.array([float(a) for g, a in rows if g != "attachedLower"])
+h0 = 4 / 3 * np.pi * np.sum(r**3) / (12 * 12) / 0.58
+print("%.12g" % (4.5 * r.mean() * 2 / h0))
+PY
+) || exit 1
+props=$work/acrivos/constant/particleProperties
+foamDictionary -entry gravity/shieldsNumber -remove "$props" > /dev/null
+foamDictionary -entry gravity/acrivosNumber -set "$acrivos" "$props" > /dev/null
+foamDictionary -entry gravity/packingFraction -set 0.58 "$props" > /dev/null
+(cd "$work/acrivos" && runLogged lubricatedDEMFoam) || exit 1
+# foamDictionary writes 6 digits of A: Sh 2 within 1e-5
+sh=$(sed -n 's/^    gravity .* Shields number \([^,]*\),.*/\1/p' \
+    "$work/acrivos/log.lubricatedDEMFoam")
+awk -v s="$sh" 'BEGIN { exit !(s > 2 - 2e-5 && s < 2 + 2e-5) }' \
+    || { echo "FAILED: Acrivos number $acrivos gives Sh '$sh', not 2"; exit 1; }
+echo "   Acrivos number $acrivos (h_0 = V/0.58): Shields number $sh"
+foamDictionary -entry gravity/packingFraction -remove "$props" > /dev/null
+expectStop "$work/acrivos" lubricatedDEMFoam "packingFraction" || exit 1
 
 setUp "$work/badOpen"
 sed -i 's/^    open .*/    open        (w);/' "$work/badOpen/constant/particleProperties"

@@ -45,7 +45,6 @@ def read_case(case, start, dz):
     velocity gradient, component 2; z: along the vorticity, component 3)."""
     with open(os.path.join(case, "constant", "particleProperties")) as f:
         props = f.read()
-    sh = number(props, "shieldsNumber")
     gamma = number(props, "shearRate")
     eta = number(props[props.index("lubricatedContact"):], "viscosity")
     drag = props[props.index("drag"):] if re.search(r"^drag\b", props, re.M) else ""
@@ -93,6 +92,12 @@ def read_case(case, start, dz):
         n_sum = n_sum + np.bincount(k[ok], minlength=len(u))
     z = 0.5 * (edges[1:] + edges[:-1]) - edges[0]
     volume = (4 / 3 * np.pi * np.sum(a[mobile]**3)) / area
+    if re.search(r"^\s*shieldsNumber\s", props, re.M):
+        sh = number(props, "shieldsNumber")
+    else:
+        # Acrivos number (9/2) a Sh/h_0, h_0 = V/phi_m, as lubricatedDEMFoam
+        h0 = volume / number(props, "packingFraction")
+        sh = number(props, "acrivosNumber") * h0 / (4.5 * a[mobile].mean())
     return dict(sh=sh, gamma=gamma, component=axis + 1, z=z, dz=dz,
                 phi=phi_sum / len(times),
                 syy=syy_sum / len(times), volume=volume, n=len(times),

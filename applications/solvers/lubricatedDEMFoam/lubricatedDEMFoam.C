@@ -41,6 +41,8 @@ Description
     {
         direction       (0 -1 0);
         shieldsNumber   2;          // eta gammaDot/((rho_p - rho_f) g a)
+        // acrivosNumber 0.7;       // or (9/2) a Sh/h_0 (Acrivos), with
+        // packingFraction 0.58;    // h_0 = V/phi_m the settled bed
         // value        (0 -400 0); // or the acceleration itself
     }
     fluidDensity    0;              // rho_f (buoyancy)
@@ -74,6 +76,7 @@ Description
 #include "IFstream.H"
 #include "OFstream.H"
 #include "OSspecific.H"
+#include "mathematicalConstants.H"
 #include "clockTime.H"
 #include "lubricatedDEM.H"
 #include "particleList.H"
