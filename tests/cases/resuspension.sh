@@ -11,7 +11,7 @@
 #  - bad input stops with a message naming the keyword: an open direction
 #    that is not x, y or z; a fixed group absent from the particle list;
 #    a sphere leaving the cell through the open top (gravity upwards); an
-#    Acrivos number without packingFraction.
+#    Acrivos number without packingFraction, or with a Shields number.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir resuspension)
@@ -59,6 +59,9 @@ awk -v s="$sh" 'BEGIN { exit !(s > 2 - 2e-5 && s < 2 + 2e-5) }' \
 echo "   Acrivos number $acrivos (h_0 = V/0.58): Shields number $sh"
 foamDictionary -entry gravity/packingFraction -remove "$props" > /dev/null
 expectStop "$work/acrivos" lubricatedDEMFoam "packingFraction" || exit 1
+foamDictionary -entry gravity/shieldsNumber -set 2 "$props" > /dev/null
+expectStop "$work/acrivos" lubricatedDEMFoam \
+    "give shieldsNumber or acrivosNumber, not both" || exit 1
 
 setUp "$work/badOpen"
 sed -i 's/^    open .*/    open        (w);/' "$work/badOpen/constant/particleProperties"
