@@ -6,6 +6,8 @@
 #include "particleVelocitySystem.H"
 #include "rigidBodyMoments.H"
 #include "error.H"
+#include "OFstream.H"
+#include "Pstream.H"
 
 #include <Eigen/Sparse>
 #include <Eigen/IterativeLinearSolvers>
@@ -173,11 +175,43 @@ Foam::fdm::particleVelocitySystem::solve
     cg.setTolerance(tolerance);
     cg.setMaxIterations(maxIterations);
     cg.compute(A);
+    // The incomplete factorisation can break down on an SPD matrix whose
+    // near-contact couplings almost cancel its diagonal (Eigen doubles its
+    // diagonal shift ten times from 1e-3 of the scaled diagonal, then gives
+    // up).  A larger shift changes the preconditioner only, not the
+    // solution; a matrix that still fails at a shift of 100 times its
+    // scaled diagonal is not positive definite.
+    for
+    (
+        scalar shift = 0.1;
+        cg.info() != Eigen::Success && shift < 1e3;
+        shift *= 10
+    )
+    {
+        cg.preconditioner().setInitialShift(shift);
+        cg.compute(A);
+    }
     if (cg.info() != Eigen::Success)
     {
+        // Keep the matrix for inspection (row col value, 0-based)
+        const fileName dump("particleSystem.failed");
+        if (Pstream::master())
+        {
+            OFstream os(dump);
+            os.precision(17);
+            for (int k = 0; k < A.outerSize(); ++k)
+            {
+                for (sparseMatrix::InnerIterator it(A, k); it; ++it)
+                {
+                    os << it.row() << ' ' << it.col() << ' ' << it.value()
+                        << nl;
+                }
+            }
+        }
         FatalErrorInFunction
             << "Incomplete-Cholesky factorisation of the particle system"
             << " (thesis eq 2.43) failed: the matrix is not positive definite."
+            << " Written to " << dump << " (row col value)."
             << abort(FatalError);
     }
 

@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
+
 using namespace Foam;
 
 namespace
@@ -111,4 +114,80 @@ TEST(particleVelocitySystem, eliminatesPrescribedVelocities)
     // Solving again from the solution does no iteration
     const auto again = sys.solve(1e-12, 100, U, W);
     EXPECT_EQ(again.iterations, 0);
+}
+
+
+TEST(particleVelocitySystem, solvesWhereTheIncompleteCholeskyBreaksDown)
+{
+    // Eight particles of unit pseudo-mass coupled on their translations by
+    // stiff pair springs k (0.9 n n + 0.1 I), k from 1e2 to 1e5, on the
+    // relative velocity: SPD (identity plus positive semi-definite terms)
+    // but ill conditioned, like near-contact lubrication.  For this draw
+    // Eigen's incomplete Cholesky with its default shift breaks down; the
+    // system is still solved (reference: the residual of the known
+    // velocities, as above).
+    const label N = 8;
+    fdm::particleVelocitySystem sys(N);
+    uint64_t state = 74;
+    auto next = [&state]()
+    {
+        state = state*6364136223846793005ULL + 1442695040888963407ULL;
+        return double(state >> 11)/double(1ULL << 53);
+    };
+    for (label k = 0; k < 6*N; ++k)
+    {
+        sys.addEntry(k, k, 1);
+    }
+    for (label pair = 0; pair < 3*N; ++pair)
+    {
+        const label a = label(next()*N);
+        const label b = label(next()*N);
+        if (a == b)
+        {
+            continue;
+        }
+        vector n;
+        for (direction d = 0; d < 3; ++d)
+        {
+            n[d] = 2*next() - 1;
+        }
+        n /= mag(n);
+        const scalar k = std::pow(10.0, 2 + 3*next());
+        for (direction r = 0; r < 3; ++r)
+        {
+            for (direction c = 0; c < 3; ++c)
+            {
+                const scalar v = k*(0.9*n[r]*n[c] + 0.1*(r == c));
+                sys.addEntry(6*a + r, 6*a + c, v);
+                sys.addEntry(6*b + r, 6*b + c, v);
+                sys.addEntry(6*a + r, 6*b + c, -v);
+                sys.addEntry(6*b + r, 6*a + c, -v);
+            }
+        }
+    }
+
+    List<vector> Uref(N), Wref(N);
+    forAll(Uref, i)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            Uref[i][d] = next() - 0.5;
+            Wref[i][d] = next() - 0.5;
+        }
+    }
+    List<vector> f, t;
+    sys.multiply(Uref, Wref, f, t);
+    forAll(f, i)
+    {
+        sys.addRhs(i, f[i], t[i]);
+    }
+
+    List<vector> U(N, Zero), W(N, Zero);
+    const auto info = sys.solve(1e-13, 1000, U, W);
+    EXPECT_TRUE(info.converged);
+    forAll(U, i)
+    {
+        EXPECT_LT(mag(U[i] - Uref[i]), 1e-6);
+        EXPECT_LT(mag(W[i] - Wref[i]), 1e-6);
+    }
 }
