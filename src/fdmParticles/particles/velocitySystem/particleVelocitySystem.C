@@ -211,7 +211,10 @@ Foam::fdm::particleVelocitySystem::solve
         FatalErrorInFunction
             << "Incomplete-Cholesky factorisation of the particle system"
             << " (thesis eq 2.43) failed: the matrix is not positive definite."
-            << " Written to " << dump << " (row col value)."
+            << " Written to " << dump << " (row col value): its"
+            << " eigenvector of negative eigenvalue names the particles; a"
+            << " negative implicit contact stiffness or a sub-grid table"
+            << " correcting beyond the exact resistance is the likely source."
             << abort(FatalError);
     }
 
