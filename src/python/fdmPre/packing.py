@@ -104,13 +104,19 @@ def _relax(x, r, box, gap, iters, tol, free):
 
 
 def pack(box, radii, seed=1, gap=0.01, fixed_positions=None,
-         max_stages=2000, log=None):
+         max_stages=2000, log=None, stratify=None):
     """Positions (N, 3) for spheres of the given radii in box.
 
     fixed_positions: optional (M, 3) positions of the first M spheres,
     which stay where they are (spheres attached to a wall, chapter 5).
     gap: clearance kept between surfaces and from the walls, in units of
     the smallest radius.
+    stratify: optional wall-normal axis along which the start positions
+    are stratified: each radius spread evenly over the height, each
+    centre at least its own radius from the walls.  Uniform random starts
+    leave slabs of a small box over- or under-filled by their fluctuation
+    (about 15 % for the 50 spheres of a 10 x 10 x 10 a1 core), and the
+    relaxation hardly moves them; stratified, phi(y) is flat.
     """
     radii = np.asarray(radii, float)
     n = len(radii)
@@ -123,6 +129,15 @@ def pack(box, radii, seed=1, gap=0.01, fixed_positions=None,
     # not get out)
     margin = np.where(box.periodic, 0.0, radii.max() * (3 if m else 1))
     x = box.lo + margin + rng.random((n, 3)) * (box.span - 2 * margin)
+    if stratify is not None:
+        if m or box.periodic[stratify]:
+            raise ValueError("stratify needs a wall-normal axis and no"
+                             " attached spheres")
+        for radius in np.unique(radii):
+            k = np.nonzero(radii == radius)[0]
+            u = (rng.permutation(len(k)) + rng.random(len(k))) / len(k)
+            x[k, stratify] = (box.lo[stratify] + radius
+                              + u * (box.span[stratify] - 2 * radius))
     if m:
         x[:m] = fixed_positions
     phi = (4 / 3 * np.pi * radii**3).sum() / np.prod(box.span)
