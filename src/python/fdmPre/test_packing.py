@@ -95,7 +95,8 @@ class Stratified(unittest.TestCase):
         # The runPoint box (10 x 20 x 10 a1, walls y, phi0 = 0.42, 137
         # spheres): by mirror symmetry the two 5 a1 wall layers hold the
         # same fraction, and the 10 a1 core the same from seed to seed
-        # (a uniform random start misses both by 0.05-0.12 for these seeds)
+        # (a uniform random start misses the first by 0.07-0.16 for these
+        # seeds, the second by 0.05)
         box = Box([0, 0, 0], [10, 20, 10], [True, False, True])
         n1, n2 = bidisperse_counts(2000, 0.42)
         r = np.r_[np.ones(n1), 1.4 * np.ones(n2)]
