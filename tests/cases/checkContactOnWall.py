@@ -28,6 +28,13 @@ def last(path):
                                       "force")}
 
 
+def record(path, time):
+    """The record at `time` of every series."""
+    with h5py.File(path, "r") as f:
+        k = int(np.argmin(np.abs(f["time"][:] - time)))
+        return {name: f[name][k] for name in f if name not in ("radius", "group")}
+
+
 def main(work):
     s = last(f"{work}/straight/postProcessing/particles.h5")
     r = last(f"{work}/restart/postProcessing/particles.h5")
@@ -70,6 +77,14 @@ def main(work):
     c.check("restart: max |dU| / max |U|",
             np.abs(r["velocity"] - s["velocity"]).max() / np.abs(s["velocity"]).max(), 1e-6)
     c.check("restart: max |dF_c| / W", np.abs(r["contactForce"] - Fc).max() / W, 1e-6)
+    # The record at the restart time repeats the interrupted run's one: the
+    # contact loads of the solved state, implicit share included
+    s1 = record(f"{work}/straight/postProcessing/particles.h5", 1)
+    r1 = record(f"{work}/restart/postProcessing/particles.h5", 1)
+    c.check("restart: |first record time - 1|", abs(r1["time"] - 1), 1e-9)
+    for key in ("force", "contactForce", "contactTorque", "contactStresslet"):
+        c.check(f"restart: record at t = 1, max |d {key}| / W",
+                np.abs(r1[key] - s1[key]).max() / W, 1e-9)
     c.check("2 ranks: max |dU| / max |U|",
             np.abs(par["velocity"] - s["velocity"]).max() / np.abs(s["velocity"]).max(), 1e-5)
     c.check("2 ranks: max |dF_c| / W", np.abs(par["contactForce"] - Fc).max() / W, 1e-5)

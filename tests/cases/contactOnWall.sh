@@ -6,7 +6,9 @@
 # Checks in checkContactOnWall.py: normal force = W and the overlap of the
 # contact law (eq 2.57, recomputed independently), sticking below and
 # sliding at mu F_el above the Coulomb limit, a restart from t = 1 (slip
-# history in particleState) reaching the same state, and the same run on 2
+# history in particleState) reaching the same state and repeating the
+# interrupted run's record at t = 1 (contact loads of the solved state,
+# implicit share included), and the same run on 2
 # MPI ranks cut through the middle sphere matching the serial one.
 source "${0%/*}/caseTestFunctions"
 

@@ -137,9 +137,14 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
             position_, radius_, box_, mesh_.time().deltaTValue()
         );
         contacts_->report();
-        contactForce_ = contacts_->forces();
-        contactTorque_ = contacts_->torques();
-        contactStresslet_ = contacts_->stresslets();
+        // Explicit loads for the coming solve; a solved state read at a
+        // restart keeps the loads it was written with
+        if (!solved_)
+        {
+            contactForce_ = contacts_->forces();
+            contactTorque_ = contacts_->torques();
+            contactStresslet_ = contacts_->stresslets();
+        }
     }
 
     // lambda is not advected (thesis 2.4, step 2): keep it where a support

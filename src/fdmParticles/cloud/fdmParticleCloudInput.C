@@ -171,6 +171,12 @@ void Foam::fdmParticleCloud::readState()
     if (contacts_)
     {
         contacts_->readState(state);
+        // The loads at the solved state (explicit part plus the implicit
+        // stiffness' share), so that the record at the restart time is the
+        // one the interrupted run wrote
+        contactForce_ = state.get<List<vector>>("contactForce");
+        contactTorque_ = state.get<List<vector>>("contactTorque");
+        contactStresslet_ = state.get<List<symmTensor>>("contactStresslet");
     }
     solved_ = state.get<bool>("solved");
     hasHistory_ = state.get<bool>("hasHistory");
