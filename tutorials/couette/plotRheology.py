@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Couette suspension post-processing (thesis 1, sections 2.7 and 4.2):
 core viscosity (eq 2.76) with its error bar, normal stress differences and
-contact share (eq 4.13), profiles phi(y) (eq 2.70) and u_p(y) (eq 6.4),
+contact share (eq 4.13), per unit of strain and averaged with two error
+bars (block means; integrated autocorrelation), profiles phi(y) (eq 2.70) and u_p(y) (eq 6.4),
 per-particle force balance (eq 4.17), and PNG plots.
 
     plotRheology.py [case] [--layer H] [--start STRAIN]
@@ -22,7 +23,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from fdmPost.particleCase import momentum_balance  # noqa: E402
-from fdmPost.rheology import couette_case, core_rheology, maron_pierce  # noqa: E402
+from fdmPost.rheology import (autocorrelation_time, couette_case,  # noqa: E402
+                              core_rheology, maron_pierce)
 
 
 def main():
@@ -41,8 +43,16 @@ def main():
     if strain[-1] <= args.start:
         sys.exit(f"plotRheology: the run reached strain {strain[-1]:.3g}, not"
                  f" beyond --start {args.start}")
-    r = core_rheology(cs, args.start / gamma0)
+    series = cs.series()
+    r = core_rheology(cs, args.start / gamma0, series=series)
     steady = np.nonzero(cs.t >= args.start / gamma0)[0]
+    g, phic, hp, c = series
+    sxy = eta * g + hp[:, 0, 1] + c[:, 0, 1]
+    # Second error estimate of eta_core: the number of independent samples
+    # from the integrated autocorrelation time of the instantaneous value
+    etaInst = (sxy / (eta * g))[steady]
+    tau = autocorrelation_time(etaInst, np.median(np.diff(strain)))
+    samples = (strain[-1] - args.start) / (2 * tau)
 
     # Mechanical consistency (Table 4.8): wall force against the particles'
     # lambda, lambda over the volume against the particle sum, and the
@@ -70,11 +80,24 @@ def main():
     print(f"  core (|y - Ly/2| < {L[1] / 2 - args.layer:g}): phi_core"
           f" {pm('phiCore')}, gammaDot_core/gammaDot_0"
           f" {r['gammaDotCore'][0] / gamma0:.3f}")
-    print(f"  core viscosity eta_core (eq 2.76): {pm('etaCore')}")
+    print(f"  core viscosity eta_core (eq 2.76): {pm('etaCore')} (5 blocks);"
+          f" +- {np.nanstd(etaInst) / np.sqrt(samples):.3f} from its"
+          f" autocorrelation strain {tau:.2f} ({samples:.1f} independent"
+          " samples)")
     print(f"  thesis fit at this phi_core (Maron-Pierce, alpha 0.803, phi_J"
           f" 0.59): {maron_pierce(r['phiCore'][0]):.3f}")
     print(f"  N1/Sigma12 {pm('N1')}, N2/Sigma12 {pm('N2')},"
           f" contact share of Sigma12 {pm('contactShare')}")
+    print("  per unit of strain: phi_core, gammaDot_core/gammaDot_0, eta_core,"
+          " contact share, N1/Sigma12, N2/Sigma12")
+    for k in range(int(strain[-1]) + 1):
+        w = core_rheology(cs, k / gamma0, end_time=(k + 1) / gamma0,
+                          series=series)
+        if w["records"] > 1:
+            print(f"    {k:3d}-{k + 1:<3d} {w['phiCore'][0]:.4f}"
+                  f" {w['gammaDotCore'][0] / gamma0:6.3f}"
+                  f" {w['etaCore'][0]:7.2f} {w['contactShare'][0]:6.3f}"
+                  f" {w['N1'][0]:7.3f} {w['N2'][0]:7.3f}")
     print("  mechanical consistency (Table 4.8 columns, x y z):")
     for name, v in zip(("wall vs particle forces |F^w - F^FDM,parts|/|F^w|",
                         "volume vs particles |F^FDM,V - F^FDM,parts|/|F^FDM,V|",
@@ -86,7 +109,6 @@ def main():
     # Plots: profiles and time series
     bins = int(round(L[1] / 0.2))
     yb, phi, up = cs.profiles(bins, steady)
-    g, phic, hp, c = cs.series()
     fig, ax = plt.subplots(1, 3, figsize=(12, 3.8))
     ax[0].plot(phi, yb, "-")
     ax[0].axhspan(0, args.layer, color="0.9")
@@ -99,7 +121,6 @@ def main():
     ax[1].set_xlabel(r"$u_{p,x}$")
     ax[1].set_title("particle velocity")
     ax[1].legend(fontsize=8)
-    sxy = eta * g + hp[:, 0, 1] + c[:, 0, 1]
     ax[2].plot(strain, sxy / (eta * g), label=r"$\eta_{core}$ (instantaneous)")
     ax[2].plot(strain, c[:, 0, 1] / (eta * g), label=r"contact part $\Sigma^c_{xy}/\eta\dot\gamma$")
     ax[2].axhline(r["etaCore"][0], color="k", lw=0.8, ls="--",

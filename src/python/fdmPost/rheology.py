@@ -161,11 +161,24 @@ def block_mean(x, blocks=5):
     return means.mean(), means.std(ddof=1) / np.sqrt(blocks)
 
 
-def core_rheology(cs, start_time, blocks=5):
-    """Time-averaged core rheology after start_time (eq 2.76, eq 4.13):
-    dict of (mean, standard error)."""
-    g, phi, hp, c = cs.series()
-    keep = cs.t >= start_time
+def autocorrelation_time(x, dx):
+    """Integrated autocorrelation time tau = dx (1/2 + sum_k rho_k) of an
+    evenly sampled series, the sum cut at the first negative rho_k; a
+    series of length T holds about T/(2 tau) independent samples."""
+    x = np.asarray(x, float)
+    x = x[np.isfinite(x)] - np.nanmean(x)
+    f = np.fft.rfft(x, 2 * len(x))  # zero-padded: no wrap-around
+    rho = np.fft.irfft(f * f.conj())[:len(x)] / (x.var() * len(x))
+    cut = np.argmax(rho < 0) if (rho < 0).any() else len(rho)
+    return dx * (0.5 + rho[1:cut].sum())
+
+
+def core_rheology(cs, start_time, blocks=5, end_time=np.inf, series=None):
+    """Time-averaged core rheology over start_time <= t < end_time (eq 2.76,
+    eq 4.13): dict of (mean, standard error).  `series` is cs.series(),
+    passed when it is at hand already."""
+    g, phi, hp, c = cs.series() if series is None else series
+    keep = (cs.t >= start_time) & (cs.t < end_time)
     g, phi, hp, c = g[keep], phi[keep], hp[keep], c[keep]
     gm = np.nanmean(g)
     # Total shear stress of eq 2.72: fluid eta gammaDot_core + particles

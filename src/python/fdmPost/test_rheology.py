@@ -4,9 +4,10 @@ identities."""
 import unittest
 
 import numpy as np
+import scipy.signal
 
-from fdmPost.rheology import (CouetteSeries, block_mean, slab_volume,
-                              symm6_to_tensor)
+from fdmPost.rheology import (CouetteSeries, autocorrelation_time,
+                              block_mean, slab_volume, symm6_to_tensor)
 
 
 class SlabVolume(unittest.TestCase):
@@ -75,6 +76,19 @@ class Couette(unittest.TestCase):
         m, e = block_mean(np.r_[np.zeros(5), np.ones(5)], blocks=2)
         self.assertAlmostEqual(m, 0.5)
         self.assertAlmostEqual(e, 0.5)
+
+    def test_autocorrelation_time_of_ar1(self):
+        # AR(1) x_k = r x_{k-1} + noise: rho_k = r^k, so
+        # tau = dx (1/2 + r/(1 - r)) = dx (1 + r)/(2 (1 - r)) exactly
+        r, dx = 0.8, 0.01
+        rng = np.random.default_rng(3)
+        noise = rng.standard_normal(100000)
+        x = scipy.signal.lfilter([1.0], [1.0, -r], noise)
+        exact = dx * (1 + r) / (2 * (1 - r))
+        self.assertAlmostEqual(autocorrelation_time(x, dx) / exact, 1.0,
+                               delta=0.05)
+        white = autocorrelation_time(noise, dx)
+        self.assertAlmostEqual(white / (0.5 * dx), 1.0, delta=0.05)
 
 
 if __name__ == "__main__":
