@@ -8,7 +8,8 @@
 # sliding at mu F_el above the Coulomb limit, a restart from t = 1 (slip
 # history in particleState) reaching the same state and repeating the
 # interrupted run's record at t = 1 (contact loads of the solved state,
-# implicit share included), and the same run on 2
+# implicit share included), a restart without its particleState stopping
+# with a message, and the same run on 2
 # MPI ranks cut through the middle sphere matching the serial one.
 source "${0%/*}/caseTestFunctions"
 
@@ -25,7 +26,14 @@ cloneCase contactOnWall "$work/straight"
     foamDictionary -entry startFrom -set latestTime system/controlDict \
         > /dev/null
     runLogged fdmSuspensionFoam
+    # The same restart without the particle state must stop, not go on
+    # from the initial positions
+    mkdir ../noState
+    cp -r 0 1 constant system ../noState/
+    rm ../noState/1/particleState
 ) || exit 1
+expectStop "$work/noState" fdmSuspensionFoam 'particleState" is missing' \
+    || exit 1
 cloneCase contactOnWall "$work/parallel"
 (
     cd "$work/parallel" || exit 1
