@@ -96,7 +96,7 @@ def main():
           f" contact share of Sigma12 {pm('contactShare')}")
     print("  per unit of strain: phi_core, gammaDot_core/gammaDot_0, eta_core,"
           " contact share, N1/Sigma12, N2/Sigma12")
-    for k in range(int(strain[-1]) + 1):
+    for k in range(int(strain[0]), int(strain[-1]) + 1):
         w = core_rheology(cs, k / gamma0, end_time=(k + 1) / gamma0,
                           series=series)
         if w["records"] > 1:
