@@ -57,6 +57,17 @@ expectFatal missingRelaxation system/fvSolution \
 expectFatal unknownAcceleration system/fvSolution \
     's/^ *nCorrectors .*$/&\n    acceleration fast;/' "acceleration fast" \
     "none (thesis outer iteration) and anderson"
+expectFatal misspeltSimplecKey system/fvSolution \
+    's/nOuterCorrectors/nOuterCorrector/' "Unknown keyword 'nOuterCorrector'" \
+    "nearest valid spelling: 'nOuterCorrectors'"
+expectFatal unknownFlowKey constant/flowProperties \
+    '$a meanPressureGradent (0 0 0);' "Unknown keyword 'meanPressureGradent'" \
+    "nearest valid spelling: 'meanPressureGradient'"
+expectFatal unknownTransportKey constant/transportProperties \
+    '$a nu2 1;' "Unknown keyword 'nu2'" "nearest valid spelling: 'nu'"
+expectFatal stressFunctionKey system/controlDict \
+    '$a functions { stress { type suspensionStress; libs ("libfdmParticles.so"); walLayer 1; } }' \
+    "Unknown keyword 'walLayer'" "nearest valid spelling: 'wallLayer'"
 
 template=shearedSphere
 pp=constant/particleProperties
@@ -72,13 +83,14 @@ expectFatal unknownGroup $pp 's/(pushed (5.05/(pulled (5.05/' \
 expectFatal badTranslation $pp 's/force (0 0 18.85);/translation moving;/' \
     translation "free, fixed or a velocity vector"
 expectFatal unknownGroupKeyword $pp 's/force (0 0 18.85);/forse (0 0 1);/' \
-    "Unknown keyword forse" "allowed keywords"
+    "Unknown keyword 'forse'" "nearest valid spelling: 'force'" \
+    "allowed keywords"
 expectFatal missingLambdaTolerance $pp 's/lambdaTolerance .*;//' \
     "'lambdaTolerance'"
 expectFatal missingFluidDensity constant/transportProperties 's/^rho .*$//' \
     "'rho'"
 expectFatal unknownSubGridModel $pp '$a subGrid { model fancy; }' \
-    "Unknown subGrid model fancy" "frameInvariant" "none"
+    "Unknown subGrid model 'fancy'" "frameInvariant" "none"
 expectFatal missingSubGridTable $pp \
     '$a subGrid { model frameInvariant; pairTables ("noSuchTable"); }' \
     "Cannot read the sub-grid table" "noSuchTable" "subGridCalibration"
@@ -88,13 +100,37 @@ expectFatal subGridTableOtherSettings $pp \
 expectFatal badGapFloor $pp '$a gapFloor 0;' "gapFloor" "0 < gapFloor < 0.1"
 expectFatal unknownContactModel $pp \
     '$a contact { model sticky; roughness 5e-3; friction 0.5; kn 1e4; }' \
-    "Unknown contact model sticky" "adhesiveHertz" "hertz"
+    "Unknown contact model 'sticky'" "adhesiveHertz" "hertz"
 expectFatal contactStiffnessTwice $pp \
     '$a contact { roughness 5e-3; friction 0.5; kn 1e4; shearRate 1; meanDeformation 0.2; }' \
     "contact" "either as kn" "not both"
 expectFatal contactRoughTooLarge $pp \
     '$a contact { roughness 0.5; friction 0.5; kn 1e4; }' \
     "roughness 0.5" "0 < roughness < 0.1"
+# Misspelt optional blocks and keywords: each once (a run without them
+# would go on without lubrication, contacts or gravity)
+expectFatal misspeltSubGrid $pp '$a subgrid { model frameInvariant; }' \
+    "Unknown keyword 'subgrid'" "nearest valid spelling: 'subGrid'"
+expectFatal misspeltContact $pp \
+    '$a contacts { roughness 5e-3; friction 0.5; kn 1e4; }' \
+    "Unknown keyword 'contacts'" "nearest valid spelling: 'contact'"
+expectFatal misspeltGravity $pp '$a gravty (0 -1 0);' \
+    "Unknown keyword 'gravty'" "nearest valid spelling: 'gravity'"
+expectFatal misspeltCouplingKey $pp \
+    's/particleSolveTolerance/particleSolveTol/' \
+    "Unknown keyword 'particleSolveTol'" \
+    "nearest valid spelling: 'particleSolveTolerance'"
+expectFatal misspeltContactKey $pp \
+    '$a contact { roughness 5e-3; frictoin 0.5; kn 1e4; }' \
+    "Unknown keyword 'frictoin'" "nearest valid spelling: 'friction'"
+expectFatal misspeltSubGridKey $pp \
+    '$a subGrid { model frameInvariant; wall false; }' \
+    "Unknown keyword 'wall'" "nearest valid spelling: 'walls'"
+expectFatal misspeltIndicatorKey $pp '$a indicator { bb 5; }' \
+    "Unknown keyword 'bb'" "nearest valid spelling: 'b'"
+expectFatal misspeltOutputKey $pp '$a output { timeSeriesIntervall 2; }' \
+    "Unknown keyword 'timeSeriesIntervall'"
+expectFatal missingHeader $pp '/^FoamFile/,/^}/d' "needs the FoamFile header"
 expectFatal stressFunctionAxis system/controlDict \
     '$a functions { stress { type suspensionStress; libs ("libfdmParticles.so"); normal w; } }' \
     "keyword normal is w" "allowed: x, y, z"

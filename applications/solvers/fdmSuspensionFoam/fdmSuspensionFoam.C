@@ -41,6 +41,9 @@ Usage
 #include "andersonAcceleration.H"
 #include "sumOverRanks.H"
 #include "outerState.H"
+#include "checkKeywords.H"
+#include "checkTimeControls.H"
+#include "incompleteWrites.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -56,7 +59,9 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    fdm::setAsideIncompleteWrites(args);
     #include "createTime.H"
+    fdm::checkTimeControls(runTime);
     #include "createMesh.H"
     #include "createFields.H"
     #include "initContinuityErrs.H"

@@ -80,6 +80,7 @@ Description
 #include "clockTime.H"
 #include "lubricatedDEM.H"
 #include "particleList.H"
+#include "checkTimeControls.H"
 #include "readBounded.H"
 #include "HashSet.H"
 
@@ -98,6 +99,7 @@ int main(int argc, char *argv[])
     argList::noParallel();
     #include "setRootCase.H"
     #include "createTime.H"
+    fdm::checkTimeControls(runTime);
 
     IOdictionary properties
     (

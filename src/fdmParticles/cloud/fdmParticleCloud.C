@@ -8,6 +8,7 @@
 #include "processorCyclicPolyPatch.H"
 #include "pairSearch.H"
 #include "constants.H"
+#include "checkKeywords.H"
 #include <sstream>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -250,12 +251,23 @@ Foam::fdmParticleCloud::fdmParticleCloud
 {
     if (!dict_.headerOk())
     {
+        fdm::requireHeader(dict_.objectPath(), false);
         Info<< "No constant/particleProperties: particle-free Stokes flow"
             << nl << endl;
         return;
     }
 
     Info<< "Reading particleProperties" << nl;
+    fdm::checkKeywords
+    (
+        dict_,
+        {
+            "coupling", "gravity", "groups", "particles", "particlesFile",
+            "indicator", "subGrid", "contact", "gapFloor", "output",
+            "acceptChangedRadii"
+        },
+        "top level of the particle input"
+    );
 
     rhoFluid_ = transport.get<scalar>("rho");
     if (!(rhoFluid_ > 0))
@@ -317,11 +329,9 @@ Foam::fdmParticleCloud::fdmParticleCloud
         radius_
     );
 
-    timeSeriesInterval_ =
-        dict_.subOrEmptyDict("output").getOrDefault<label>
-        (
-            "timeSeriesInterval", 1
-        );
+    const dictionary output(dict_.subOrEmptyDict("output"));
+    fdm::checkKeywords(output, {"timeSeriesInterval"}, "output block");
+    timeSeriesInterval_ = output.getOrDefault<label>("timeSeriesInterval", 1);
     if (timeSeriesInterval_ < 1)
     {
         FatalIOErrorInFunction(dict_)
@@ -329,16 +339,6 @@ Foam::fdmParticleCloud::fdmParticleCloud
             << dict_.name() << ": allowed values are integers >= 1"
             << exit(FatalIOError);
     }
-    timeSeries_.reset
-    (
-        new particleHDF5Writer
-        (
-            mesh.time().globalPath()/"postProcessing"/"particles.h5",
-            radius_,
-            group_,
-            mesh.time().value()
-        )
-    );
 
     Info<< "    " << size() << " particles in " << groups_.size()
         << " group(s); Delta = " << delta_ << ", radius/Delta from "

@@ -12,70 +12,167 @@ Description
 #include "OSspecific.H"
 #include "IOobject.H"
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+template<class Type>
+bool finite(const Type& x)
+{
+    for (Foam::direction d = 0; d < Foam::pTraits<Type>::nComponents; ++d)
+    {
+        if (!std::isfinite(Foam::component(x, d)))
+        {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fdmParticleCloud::checkFinite() const
+{
+    const Time& runTime = mesh_.time();
+    const auto stop = [&](const char* what, const label p)
+    {
+        FatalErrorInFunction
+            << "Non-finite " << what << " of particle " << p << " at time "
+            << runTime.timeName() << ": nothing of this time is written"
+            << " (particleState, particles.h5, VTK); the last written time"
+            << " is the last good state." << nl
+            << "    The solve diverged: lower the U relaxation factor in"
+            << " system/fvSolution, use acceleration anderson there, or"
+            << " lower deltaT in system/controlDict." << exit(FatalError);
+    };
+    forAll(position_, p)
+    {
+        if (!finite(position_[p])) stop("position", p);
+        if (!finite(U_[p])) stop("velocity", p);
+        if (!finite(Omega_[p])) stop("angular velocity", p);
+        if (!finite(force_[p])) stop("force", p);
+        if (!finite(torque_[p])) stop("torque", p);
+        if (!finite(stresslet_[p])) stop("stresslet", p);
+        if (!finite(dipoleTrace_[p])) stop("dipole trace", p);
+        if (!finite(contactForce_[p])) stop("contact force", p);
+        if (!finite(contactTorque_[p])) stop("contact torque", p);
+        if (!finite(contactStresslet_[p])) stop("contact stresslet", p);
+    }
+}
+
 
 void Foam::fdmParticleCloud::writeState() const
 {
+    // Every rank has written its fields of this time before the particle
+    // state, the last file of a time directory, appears: a time with a
+    // particleState is whole (a restart relies on it)
+    label sync = 0;
+    reduce(sync, sumOp<label>());
+
     if (empty() || !Pstream::master())
     {
         return;
     }
+    checkFinite();
 
     const Time& runTime = mesh_.time();
     const fileName dir = runTime.globalPath()/runTime.timeName();
     mkDir(dir);
 
-    OFstream os(dir/"particleState");
-    // Full precision: a restart must continue the same trajectory
-    os.precision(17);
-    IOobject io
-    (
-        "particleState",
-        runTime.timeName(),
-        mesh_,
-        IOobject::NO_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-    io.writeHeader(os, "dictionary");
-
-    os.writeEntry("nParticles", size());
-    os.writeEntry("solved", solved_);
-    os.writeEntry("hasHistory", hasHistory_);
-    os.writeEntry("radius", radius_);
-    os.writeEntry("position", position_);
-    os.writeEntry("velocity", U_);
-    os.writeEntry("angularVelocity", Omega_);
-    os.writeEntry("previousVelocity", Uold_);
-    os.writeEntry("force", force_);
-    os.writeEntry("torque", torque_);
-    os.writeEntry("stresslet", stresslet_);
-    os.writeEntry("dipoleTrace", dipoleTrace_);
-    if (contacts_)
+    // Written under a temporary name and renamed: a kill leaves either no
+    // particleState or a whole one
+    const fileName tmp = dir/"particleState.tmp";
     {
-        os.writeEntry("contactForce", contactForce_);
-        os.writeEntry("contactTorque", contactTorque_);
-        os.writeEntry("contactStresslet", contactStresslet_);
-        contacts_->writeState(os);
+        OFstream os(tmp);
+        // Full precision: a restart must continue the same trajectory
+        os.precision(17);
+        IOobject io
+        (
+            "particleState",
+            runTime.timeName(),
+            mesh_,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+        io.writeHeader(os, "dictionary");
+
+        os.writeEntry("nParticles", size());
+        os.writeEntry("solved", solved_);
+        os.writeEntry("hasHistory", hasHistory_);
+        os.writeEntry("radius", radius_);
+        os.writeEntry("position", position_);
+        os.writeEntry("velocity", U_);
+        os.writeEntry("angularVelocity", Omega_);
+        os.writeEntry("previousVelocity", Uold_);
+        os.writeEntry("force", force_);
+        os.writeEntry("torque", torque_);
+        os.writeEntry("stresslet", stresslet_);
+        os.writeEntry("dipoleTrace", dipoleTrace_);
+        if (contacts_)
+        {
+            os.writeEntry("contactForce", contactForce_);
+            os.writeEntry("contactTorque", contactTorque_);
+            os.writeEntry("contactStresslet", contactStresslet_);
+            contacts_->writeState(os);
+        }
+        IOobject::writeEndDivider(os);
+        os.flush();
+        if (!os.good())
+        {
+            FatalErrorInFunction
+                << "Cannot write " << tmp << " (disk full?)"
+                << exit(FatalError);
+        }
     }
-    IOobject::writeEndDivider(os);
+    mv(tmp, dir/"particleState");
 }
 
 
 void Foam::fdmParticleCloud::writeTimeSeries()
 {
-    if (empty() || mesh_.time().timeIndex() % timeSeriesInterval_ != 0)
+    if (empty())
     {
         return;
     }
-    timeSeries_->append
-    (
-        mesh_.time().value(),
+    const Time& runTime = mesh_.time();
+    if (runTime.timeIndex() % timeSeriesInterval_ == 0)
+    {
+        checkFinite();
+        if (!timeSeries_)
         {
-            position_, U_, Omega_, force_, torque_, stresslet_, dipoleTrace_,
-            contactForce_, contactTorque_, contactStresslet_
+            // Created at the first record, so that -postProcess, which
+            // constructs the cloud but records nothing, leaves it alone
+            timeSeries_.reset
+            (
+                new particleHDF5Writer
+                (
+                    runTime.globalPath()/"postProcessing"/"particles.h5",
+                    radius_,
+                    group_,
+                    runTime.value()
+                )
+            );
         }
-    );
+        timeSeries_->append
+        (
+            runTime.value(),
+            {
+                position_, U_, Omega_, force_, torque_, stresslet_,
+                dipoleTrace_, contactForce_, contactTorque_,
+                contactStresslet_
+            }
+        );
+    }
+    if (timeSeries_ && runTime.writeTime())
+    {
+        // Publish the records up to this write time
+        timeSeries_->commit();
+    }
 }
 
 

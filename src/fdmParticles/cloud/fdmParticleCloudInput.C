@@ -13,6 +13,7 @@ Description
 #include "particleList.H"
 #include "IFstream.H"
 #include "OSspecific.H"
+#include "checkKeywords.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -47,6 +48,15 @@ void requirePositive
 void Foam::fdmParticleCloud::readCoupling()
 {
     const dictionary& c = dict_.subDict("coupling");
+    fdm::checkKeywords
+    (
+        c,
+        {
+            "lambdaTolerance", "lambdaToleranceFirstStep",
+            "particleSolveTolerance", "alphaLambdaFactor"
+        },
+        "coupling block"
+    );
 
     lambdaTolerance_ = c.get<scalar>("lambdaTolerance");
     requirePositive(c, "lambdaTolerance", lambdaTolerance_, true);
@@ -66,10 +76,11 @@ void Foam::fdmParticleCloud::readCoupling()
     alphaLambda_ = factor*sqr(delta_)/nu_;
 
     const dictionary ind(dict_.subOrEmptyDict("indicator"));
+    fdm::checkKeywords(ind, {"b", "c"}, "indicator block");
     const scalar b = ind.getOrDefault<scalar>("b", 5);
     const scalar cc = ind.getOrDefault<scalar>("c", 0.3);
-    requirePositive(dict_.subOrEmptyDict("indicator"), "b", b);
-    requirePositive(dict_.subOrEmptyDict("indicator"), "c", cc, true);
+    requirePositive(ind, "b", b);
+    requirePositive(ind, "c", cc, true);
     indicator_ = fdm::indicatorFunctions(b, cc, delta_);
 }
 
@@ -171,6 +182,20 @@ void Foam::fdmParticleCloud::readState()
         FatalIOErrorInFunction(state)
             << file << " holds " << n << " particles but "
             << dict_.name() << " lists " << size() << exit(FatalIOError);
+    }
+
+    const scalarField radius(state.get<scalarField>("radius"));
+    const scalar change = max(mag(radius - radius_));
+    const bool accept = dict_.getOrDefault("acceptChangedRadii", false);
+    if (change > 1e-12*max(radius_) && !accept)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "The particle radii in " << dict_.name() << " differ from"
+            << " those of the run being continued, " << file
+            << " (largest change " << change << ")." << nl
+            << "    Restore the list, start at time 0, or set"
+            << " acceptChangedRadii true; in " << dict_.name()
+            << " to continue with the new radii" << exit(FatalIOError);
     }
 
     position_ = state.get<pointField>("position");

@@ -5,6 +5,7 @@
 
 #include "particleGroup.H"
 #include "token.H"
+#include "checkKeywords.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -91,18 +92,12 @@ Foam::particleGroup::particleGroup
             << ": allowed values are > 0" << exit(FatalIOError);
     }
 
-    const wordList allowed
-    ({"density", "translation", "rotation", "force", "torque"});
-    for (const entry& e : dict)
-    {
-        if (!allowed.found(e.keyword()))
-        {
-            FatalIOErrorInFunction(dict)
-                << "Unknown keyword " << e.keyword() << " in " << dict.name()
-                << nl << "    allowed keywords: " << allowed
-                << exit(FatalIOError);
-        }
-    }
+    fdm::checkKeywords
+    (
+        dict,
+        {"density", "translation", "rotation", "force", "torque"},
+        "particle group " + name
+    );
 }
 
 

@@ -4,12 +4,15 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleHDF5Writer.H"
+#include "particleHDF5Files.H"
 #include "OSspecific.H"
 #include "Pstream.H"
 #include "error.H"
 
-#include <hdf5.h>
-#include <vector>
+#include <unistd.h>
+#include <fcntl.h>
+
+using namespace Foam::particleHDF5Files;
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -18,100 +21,195 @@ namespace
 
 using namespace Foam;
 
-void check(const herr_t status, const char* what, const fileName& path)
+//- Flush a closed file to the disk before it is renamed into place
+void syncFile(const fileName& path)
 {
-    if (status < 0)
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    if (fd >= 0)
+    {
+        ::fsync(fd);
+        ::close(fd);
+    }
+}
+
+//- A name beside path that is not taken yet: path.suffix, path.suffix1, ...
+fileName freeName(const fileName& path, const word& suffix)
+{
+    fileName name = path + "." + suffix;
+    for (label i = 1; exists(name); ++i)
+    {
+        name = path + "." + suffix + Foam::name(i);
+    }
+    return name;
+}
+
+//- particles/segment<k>.h5, relative to postProcessing
+fileName segmentName(const label k)
+{
+    return fileName("particles")/word("segment" + Foam::name(k) + ".h5");
+}
+
+//- Index k of "segment<k>.h5", -1 for other names
+label segmentIndex(const fileName& name)
+{
+    const std::string s(name.name());
+    if (s.size() < 11 || s.compare(0, 7, "segment") != 0
+     || s.compare(s.size() - 3, 3, ".h5") != 0)
+    {
+        return -1;
+    }
+    const std::string digits(s.substr(7, s.size() - 10));
+    if (digits.empty()
+     || digits.find_first_not_of("0123456789") != std::string::npos)
+    {
+        return -1;
+    }
+    return std::stol(digits);
+}
+
+} // namespace
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::particleHDF5Writer::recover(const scalar startTime)
+{
+    const fileName dir = path_.path();
+    mkDir(dir/"particles");
+
+    const fileName tmp = path_ + ".tmp";
+    if (isFile(tmp))
+    {
+        Info<< "particles.h5: removed " << tmp << ", a commit that a killed"
+            << " run did not finish" << nl;
+        rm(tmp);
+    }
+
+    if (isFile(path_))
+    {
+        wordList listed;
+        const label status = readSegmentList(path_, listed);
+        if (status == unreadable)
+        {
+            const fileName aside = freeName(path_, "unreadable");
+            mv(path_, aside);
+            Info<< "particles.h5: " << path_ << " cannot be opened (written"
+                << " by a killed run of an earlier version); moved to "
+                << aside << ", the series starts afresh" << nl;
+        }
+        else if (status == plainSeries)
+        {
+            const fileName seg = segmentName(nextSegment());
+            mv(path_, dir/seg);
+            segments_.append(seg);
+            records_.append(nRecords(dir/seg));
+            Info<< "particles.h5: series of an earlier version kept as "
+                << dir/seg << nl;
+        }
+        else
+        {
+            for (const word& w : listed)
+            {
+                segments_.append(fileName("particles")/w);
+                records_.append(nRecords(dir/segments_.last()));
+            }
+        }
+    }
+
+    // Segments that no particles.h5 lists: records a killed run wrote
+    // after its last commit (or before a crash of the commit itself)
+    for (const fileName& f : readDir(dir/"particles", fileName::FILE))
+    {
+        const fileName seg = fileName("particles")/f;
+        if (segmentIndex(f) >= 0 && !segments_.found(seg))
+        {
+            Info<< "particles.h5: removed " << dir/seg << ", "
+                << nRecords(dir/seg) << " uncommitted record(s) of a run"
+                << " that stopped before its next write" << nl;
+            rm(dir/seg);
+        }
+    }
+
+    // Records at or after the start time are recomputed by this run
+    forAll(segments_, i)
+    {
+        const fileName file = dir/segments_[i];
+        const label keep = nRecordsBefore(file, startTime);
+        if (keep == records_[i])
+        {
+            continue;
+        }
+        label dropped = records_[i] - keep;
+        for (label j = i + 1; j < segments_.size(); ++j)
+        {
+            dropped += records_[j];
+            rm(dir/segments_[j]);
+        }
+        segments_.setSize(i + 1);
+        records_.setSize(i + 1);
+        if (keep > 0)
+        {
+            // Replace by a copy of its first records (the original stays
+            // listed until the new particles.h5 is in place)
+            const fileName seg = segmentName(nextSegment());
+            copyRecords(file, dir/seg, keep);
+            segments_[i] = seg;
+            records_[i] = keep;
+            writeMaster();
+            rm(file);
+        }
+        else
+        {
+            segments_.setSize(i);
+            records_.setSize(i);
+            writeMaster();
+            rm(file);
+        }
+        Info<< "particles.h5: dropped " << dropped << " record(s) at or"
+            << " after the start time " << startTime << " (this run"
+            << " recomputes them)" << nl;
+        return;
+    }
+
+    if (segments_.size() || isFile(path_))
+    {
+        writeMaster();
+    }
+}
+
+
+Foam::label Foam::particleHDF5Writer::nextSegment() const
+{
+    label next = 0;
+    const fileName dir = path_.path()/"particles";
+    for (const fileName& f : readDir(dir, fileName::FILE))
+    {
+        next = max(next, segmentIndex(f) + 1);
+    }
+    return next;
+}
+
+
+void Foam::particleHDF5Writer::writeMaster() const
+{
+    const fileName tmp = path_ + ".tmp";
+    writeVirtualSeries(tmp, radius_, group_, segments_, records_);
+    syncFile(tmp);
+    if (!mv(tmp, path_))
     {
         FatalErrorInFunction
-            << "HDF5 error while " << what << " in " << path
+            << "Cannot rename " << tmp << " to " << path_
             << exit(FatalError);
     }
 }
 
-// Create an extendible dataset of shape (0, tail...) chunked per record
-void createSeries(hid_t file, const char* name, std::vector<hsize_t> tail)
+
+void Foam::particleHDF5Writer::openSegment()
 {
-    std::vector<hsize_t> dims{0}, maxDims{H5S_UNLIMITED}, chunk{1};
-    for (const hsize_t t : tail)
-    {
-        dims.push_back(t);
-        maxDims.push_back(t);
-        chunk.push_back(t);
-    }
-    const hid_t space =
-        H5Screate_simple(int(dims.size()), dims.data(), maxDims.data());
-    const hid_t plist = H5Pcreate(H5P_DATASET_CREATE);
-    H5Pset_chunk(plist, int(chunk.size()), chunk.data());
-    const hid_t ds = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space,
-        H5P_DEFAULT, plist, H5P_DEFAULT);
-    H5Dclose(ds);
-    H5Pclose(plist);
-    H5Sclose(space);
+    openName_ = segmentName(nextSegment());
+    open_ = createSegment(path_.path()/openName_, radius_, group_);
+    openRecords_ = 0;
 }
-
-// Append one record (row of the first axis) to a dataset
-void appendRecord(hid_t file, const char* name, const double* data)
-{
-    const hid_t ds = H5Dopen2(file, name, H5P_DEFAULT);
-    hid_t space = H5Dget_space(ds);
-    const int rank = H5Sget_simple_extent_ndims(space);
-    std::vector<hsize_t> dims(rank);
-    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-    H5Sclose(space);
-
-    std::vector<hsize_t> newDims(dims), start(rank, 0), count(dims);
-    newDims[0] += 1;
-    start[0] = dims[0];
-    count[0] = 1;
-    H5Dset_extent(ds, newDims.data());
-
-    space = H5Dget_space(ds);
-    H5Sselect_hyperslab(space, H5S_SELECT_SET, start.data(), nullptr,
-        count.data(), nullptr);
-    const hid_t mem = H5Screate_simple(rank, count.data(), nullptr);
-    H5Dwrite(ds, H5T_NATIVE_DOUBLE, mem, space, H5P_DEFAULT, data);
-    H5Sclose(mem);
-    H5Sclose(space);
-    H5Dclose(ds);
-}
-
-// Shrink the first axis of a dataset to n records
-void truncateSeries(hid_t file, const char* name, const hsize_t n)
-{
-    const hid_t ds = H5Dopen2(file, name, H5P_DEFAULT);
-    const hid_t space = H5Dget_space(ds);
-    const int rank = H5Sget_simple_extent_ndims(space);
-    std::vector<hsize_t> dims(rank);
-    H5Sget_simple_extent_dims(space, dims.data(), nullptr);
-    H5Sclose(space);
-    dims[0] = n;
-    H5Dset_extent(ds, dims.data());
-    H5Dclose(ds);
-}
-
-//- The per-record series and the shape of one record per particle:
-//  vectors (3), the stresslet as symmTensor components xx xy xz yy yz zz
-//  (6) and the trace of the force dipole (scalar)
-struct seriesShape
-{
-    const char* name;
-    hsize_t components;
-};
-
-const seriesShape series[] =
-{
-    {"position", 3}, {"velocity", 3}, {"angularVelocity", 3},
-    {"force", 3}, {"torque", 3}, {"stresslet", 6}, {"dipoleTrace", 1},
-    {"contactForce", 3}, {"contactTorque", 3}, {"contactStresslet", 6}
-};
-
-std::vector<hsize_t> recordShape(const hsize_t n, const seriesShape& s)
-{
-    return s.components == 1
-        ? std::vector<hsize_t>{n} : std::vector<hsize_t>{n, s.components};
-}
-
-} // namespace
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -125,93 +223,14 @@ Foam::particleHDF5Writer::particleHDF5Writer
 )
 :
     path_(path),
-    nParticles_(radius.size()),
-    file_(-1)
+    radius_(radius),
+    group_(group),
+    open_(-1),
+    openRecords_(0)
 {
-    if (!Pstream::master())
+    if (Pstream::master())
     {
-        return;
-    }
-    mkDir(path.path());
-
-    if (isFile(path))
-    {
-        // Continue an existing series: keep the records before startTime
-        const hid_t f = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-        check(f < 0 ? -1 : 0, "opening", path);
-        file_ = f;
-
-        const hid_t ds = H5Dopen2(f, "time", H5P_DEFAULT);
-        const hid_t space = H5Dget_space(ds);
-        hsize_t n = 0;
-        H5Sget_simple_extent_dims(space, &n, nullptr);
-        std::vector<double> t(n);
-        if (n)
-        {
-            H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                t.data());
-        }
-        H5Sclose(space);
-        H5Dclose(ds);
-
-        hsize_t keep = 0;
-        while (keep < n && t[keep] < startTime - 1e-12*(1 + mag(startTime)))
-        {
-            ++keep;
-        }
-        truncateSeries(f, "time", keep);
-        for (const seriesShape& s : series)
-        {
-            if (H5Lexists(f, s.name, H5P_DEFAULT) > 0)
-            {
-                truncateSeries(f, s.name, keep);
-            }
-            else if (keep == 0)
-            {
-                // A file from an older version without this series
-                createSeries(f, s.name, recordShape(nParticles_, s));
-            }
-            else
-            {
-                FatalErrorInFunction
-                    << path << " has records but no series '" << s.name
-                    << "' (written by an older version): move it away to "
-                    << "start a new series"
-                    << exit(FatalError);
-            }
-        }
-        return;
-    }
-
-    const hid_t f = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT,
-        H5P_DEFAULT);
-    check(f < 0 ? -1 : 0, "creating", path);
-    file_ = f;
-
-    const hsize_t n = nParticles_;
-    const hid_t space = H5Screate_simple(1, &n, nullptr);
-    hid_t ds = H5Dcreate2(f, "radius", H5T_NATIVE_DOUBLE, space,
-        H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-    if (n)
-    {
-        H5Dwrite(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-            radius.cdata());
-    }
-    H5Dclose(ds);
-    std::vector<int> g(group.begin(), group.end());
-    ds = H5Dcreate2(f, "group", H5T_NATIVE_INT, space, H5P_DEFAULT,
-        H5P_DEFAULT, H5P_DEFAULT);
-    if (n)
-    {
-        H5Dwrite(ds, H5T_NATIVE_INT, H5S_ALL, H5S_ALL, H5P_DEFAULT, g.data());
-    }
-    H5Dclose(ds);
-    H5Sclose(space);
-
-    createSeries(f, "time", {});
-    for (const seriesShape& s : series)
-    {
-        createSeries(f, s.name, recordShape(n, s));
+        recover(startTime);
     }
 }
 
@@ -220,57 +239,65 @@ Foam::particleHDF5Writer::particleHDF5Writer
 
 Foam::particleHDF5Writer::~particleHDF5Writer()
 {
-    if (file_ >= 0)
-    {
-        H5Fclose(hid_t(file_));
-    }
+    commit();
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::particleHDF5Writer::appendVectors
-(
-    const char* name,
-    const List<vector>& v
-)
-{
-    // Foam::vector is three contiguous doubles
-    appendRecord(hid_t(file_), name,
-        reinterpret_cast<const double*>(v.cdata()));
-}
-
-
-void Foam::particleHDF5Writer::appendSymmTensors
-(
-    const char* name,
-    const List<symmTensor>& s
-)
-{
-    // Foam::symmTensor is six contiguous doubles (xx xy xz yy yz zz)
-    appendRecord(hid_t(file_), name,
-        reinterpret_cast<const double*>(s.cdata()));
-}
-
-
 void Foam::particleHDF5Writer::append(const scalar time, const record& r)
 {
-    if (file_ < 0)
+    if (!Pstream::master())
     {
         return;
     }
-    appendRecord(hid_t(file_), "time", &time);
-    appendVectors("position", r.position);
-    appendVectors("velocity", r.velocity);
-    appendVectors("angularVelocity", r.angularVelocity);
-    appendVectors("force", r.force);
-    appendVectors("torque", r.torque);
-    appendSymmTensors("stresslet", r.stresslet);
-    appendRecord(hid_t(file_), "dipoleTrace", r.dipoleTrace.cdata());
-    appendVectors("contactForce", r.contactForce);
-    appendVectors("contactTorque", r.contactTorque);
-    appendSymmTensors("contactStresslet", r.contactStresslet);
-    H5Fflush(hid_t(file_), H5F_SCOPE_LOCAL);
+    if (open_ < 0)
+    {
+        openSegment();
+    }
+    appendSeriesRecord
+    (
+        open_,
+        time,
+        {
+            r.position.cdata()->cdata(),
+            r.velocity.cdata()->cdata(),
+            r.angularVelocity.cdata()->cdata(),
+            r.force.cdata()->cdata(),
+            r.torque.cdata()->cdata(),
+            r.stresslet.cdata()->cdata(),
+            r.dipoleTrace.cdata(),
+            r.contactForce.cdata()->cdata(),
+            r.contactTorque.cdata()->cdata(),
+            r.contactStresslet.cdata()->cdata()
+        }
+    );
+    ++openRecords_;
+}
+
+
+void Foam::particleHDF5Writer::commit()
+{
+    if (open_ < 0)
+    {
+        return;
+    }
+    closeSegment(open_);
+    open_ = -1;
+    segments_.append(openName_);
+    records_.append(openRecords_);
+    writeMaster();
+}
+
+
+Foam::label Foam::particleHDF5Writer::nCommitted() const
+{
+    label n = 0;
+    for (const label r : records_)
+    {
+        n += r;
+    }
+    return n;
 }
 
 

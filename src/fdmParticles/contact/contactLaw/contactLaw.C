@@ -6,6 +6,7 @@
 #include "contactLaw.H"
 #include "mathematicalConstants.H"
 #include "readBounded.H"
+#include "checkKeywords.H"
 
 namespace Foam
 {
@@ -17,15 +18,47 @@ namespace fdm
 }
 
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- The contact dictionary after the check that it holds no keyword but
+//  the common ones and the law's own (before anything is read from it, so
+//  a misspelling is named as such rather than as a missing keyword)
+const Foam::dictionary& checked
+(
+    const Foam::dictionary& dict,
+    const Foam::wordList& extraKeywords
+)
+{
+    Foam::wordList allowed
+    ({
+        "model", "roughness", "friction", "kn", "shearRate",
+        "meanDeformation"
+    });
+    allowed.append(extraKeywords);
+    Foam::fdm::checkKeywords(dict, allowed, "contact block");
+    return dict;
+}
+
+} // namespace
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fdm::contactLaw::contactLaw(const dictionary& dict, const scales& s)
+Foam::fdm::contactLaw::contactLaw
+(
+    const dictionary& dict,
+    const scales& s,
+    const wordList& extraKeywords
+)
 :
     roughness_
     (
         s.a1*readBounded
         (
-            dict, "roughness", VSMALL, 0.1,
+            checked(dict, extraKeywords), "roughness", VSMALL, 0.1,
             "asperity height h_r/a_1, a_1 the smallest radius; thesis 5e-3"
         )
     ),
@@ -82,20 +115,17 @@ Foam::autoPtr<Foam::fdm::contactLaw> Foam::fdm::contactLaw::New
 {
     const word model(dict.getOrDefault<word>("model", "hertz"));
 
-    auto cstrIter = dictionaryConstructorTablePtr_->cfind(model);
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInFunction(dict)
-            << "Unknown contact model " << model << " in " << dict.name()
-            << nl << "    allowed: "
-            << dictionaryConstructorTablePtr_->sortedToc()
-            << exit(FatalIOError);
-    }
-    return cstrIter()(dict, s);
+    checkChoice
+    (
+        dict, "contact model", model,
+        dictionaryConstructorTablePtr_->sortedToc()
+    );
+    return dictionaryConstructorTablePtr_->cfind(model)()(dict, s);
 }
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
 
 Foam::fdm::contactLaw::barrierTerms Foam::fdm::contactLaw::barrier
 (

@@ -26,7 +26,7 @@ Foam::fdm::adhesiveHertzContact::adhesiveHertzContact
     const scales& s
 )
 :
-    contactLaw(dict, s),
+    contactLaw(dict, s, {"adhesionForce", "adhesionNumber"}),
     adhesion_(0)
 {
     const bool direct = dict.found("adhesionForce");

@@ -4,6 +4,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fdmOuterLoopControl.H"
+#include "checkKeywords.H"
+#include "OStringStream.H"
 
 #include <cmath>
 
@@ -12,6 +14,16 @@
 void Foam::fdmOuterLoopControl::read()
 {
     const dictionary& d = dict();
+    fdm::checkKeywords
+    (
+        d,
+        {
+            "nCorrectors", "nOuterCorrectors", "outerTolerance",
+            "pRefCell", "pRefValue", "pRefPoint", "acceleration",
+            "accelerationDepth"
+        },
+        algorithmName_ + " block"
+    );
 
     nCorrectors_ = d.get<label>("nCorrectors");
     if (nCorrectors_ < 1)
@@ -101,7 +113,9 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
     hasLambda_(false),
     lambdaResidual_(GREAT),
     lambdaTolerance_(0),
-    particleIterations_(0)
+    particleIterations_(0),
+    smallestMeasure_(GREAT),
+    velocityScale_(0)
 {
     read();
 }
@@ -124,6 +138,47 @@ void Foam::fdmOuterLoopControl::start()
     residualp_ = GREAT;
     hasLambda_ = false;
     lambdaResidual_ = GREAT;
+    smallestMeasure_ = GREAT;
+    velocityScale_ = 0;
+}
+
+
+void Foam::fdmOuterLoopControl::checkDivergence
+(
+    const scalar measure,
+    const char* name
+)
+{
+    smallestMeasure_ = min(smallestMeasure_, measure);
+    const scalar growth = 1e4;
+    const bool grown = measure > 1 && measure > growth*smallestMeasure_;
+    if (std::isfinite(measure) && !grown)
+    {
+        return;
+    }
+    OStringStream what;
+    what<< name << ' ' << measure << ", its smallest value in this step "
+        << smallestMeasure_;
+    diverged(what.str());
+}
+
+
+void Foam::fdmOuterLoopControl::diverged(const string& what) const
+{
+    const bool relaxed = mesh_.relaxEquation("U");
+    FatalErrorInFunction
+        << algorithmName_ << " outer iteration diverged at time "
+        << mesh_.time().timeName() << ", outer iteration " << iteration_
+        << ": " << what.c_str() << "." << nl
+        << "    Nothing of this step is written; the last written time is"
+        << " the last good state." << nl
+        << "    Lower the U relaxation factor in "
+        << mesh_.solutionDict().name() << " (now "
+        << (relaxed ? mesh_.equationRelaxationFactor("U") : 1)
+        << ", thesis 0.9), set acceleration anderson in its "
+        << algorithmName_ << " block (now "
+        << (accelerationDepth_ > 0 ? "anderson" : "none")
+        << "), or lower deltaT." << exit(FatalError);
 }
 
 
@@ -131,25 +186,33 @@ void Foam::fdmOuterLoopControl::setResiduals
 (
     const scalar changeU,
     const scalar residualU,
-    const scalar residualp
+    const scalar residualp,
+    const scalar maxU
 )
 {
+    if (velocityScale_ == 0)
+    {
+        velocityScale_ = maxU;
+    }
+    else if (!(maxU < 1e6*velocityScale_))
+    {
+        OStringStream what;
+        what<< "largest cell velocity " << maxU << ", 1e6 times that of"
+            << " the step's first outer iteration (" << velocityScale_ << ")";
+        diverged(what.str());
+    }
     changeU_ = changeU;
     residualU_ = residualU;
     residualp_ = residualp;
 
-    if (!std::isfinite(changeU_ + residualU_ + residualp_))
+    if (!hasLambda_)
     {
-        FatalErrorInFunction
-            << algorithmName_ << " outer iteration " << iteration_
-            << " at time " << mesh_.time().timeName()
-            << " produced a non-finite velocity or residual (change U "
-            << changeU_ << ", residuals U " << residualU_ << ", p "
-            << residualp_ << ")." << nl
-            << "    Lower the U relaxation factor in "
-            << mesh_.solutionDict().name() << " or check the boundary"
-            << " conditions; the last written time is the last good state."
-            << exit(FatalError);
+        checkDivergence(changeU_, "relative change of U");
+    }
+    const scalar all = changeU_ + residualU_ + residualp_;
+    if (!std::isfinite(all))
+    {
+        checkDivergence(all, "relative change of U or a linear residual");
     }
 }
 
@@ -166,16 +229,7 @@ void Foam::fdmOuterLoopControl::setLambdaResidual
     lambdaTolerance_ = tolerance;
     particleIterations_ = particleIterations;
 
-    if (!std::isfinite(residual))
-    {
-        FatalErrorInFunction
-            << algorithmName_ << " outer iteration " << iteration_
-            << " at time " << mesh_.time().timeName()
-            << " produced a non-finite force density lambda." << nl
-            << "    Raise alphaLambdaFactor in constant/particleProperties"
-            << " (coupling) or lower the U relaxation factor; the last"
-            << " written time is the last good state." << exit(FatalError);
-    }
+    checkDivergence(residual, "force-density residual (eq 2.54)");
 }
 
 

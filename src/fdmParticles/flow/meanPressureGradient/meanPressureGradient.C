@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "meanPressureGradient.H"
+#include "checkKeywords.H"
 
 Foam::meanPressureGradient::meanPressureGradient(const fvMesh& mesh)
 :
@@ -20,6 +21,7 @@ Foam::meanPressureGradient::meanPressureGradient(const fvMesh& mesh)
     ),
     value_("meanPressureGradient", dimAcceleration, dict_)
 {
+    fdm::checkKeywords(dict_, {"meanPressureGradient"});
     Info<< "Imposed mean pressure gradient (kinematic) "
         << value_.value() << nl << endl;
 }

@@ -7,6 +7,7 @@
 #include "addToRunTimeSelectionTable.H"
 #include "IFstream.H"
 #include "OFstream.H"
+#include "checkKeywords.H"
 #include "IOdictionary.H"
 #include "Time.H"
 #include "fvMesh.H"
@@ -174,6 +175,20 @@ Foam::functionObjects::suspensionStress::suspensionStress
 
 bool Foam::functionObjects::suspensionStress::read(const dictionary& dict)
 {
+    // This object's keywords and those OpenFOAM's function-object
+    // machinery reads (type, libs, time controls, writeFile settings)
+    fdm::checkKeywords
+    (
+        dict,
+        {
+            "normal", "flow", "bins", "wallLayer",
+            "type", "libs", "enabled", "log", "region", "timeStart",
+            "timeEnd", "executeControl", "executeInterval", "writeControl",
+            "writeInterval", "outputControl", "outputInterval",
+            "writePrecision", "writeToFile", "useUserTime"
+        },
+        "function object " + name()
+    );
     fvMeshFunctionObject::read(dict);
     writeFile::read(dict);
 

@@ -7,6 +7,7 @@
 #include "IFstream.H"
 #include "ITstream.H"
 #include "OSspecific.H"
+#include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -76,9 +77,11 @@ Foam::fdm::particleList Foam::fdm::readParticleList
     particleList list;
 
     token first(is);
+    label count = -1;
     if (first.isLabel())
     {
         // Optional count before the list, as OpenFOAM writes lists
+        count = first.labelToken();
         first = token(is);
     }
     if (!(first.isPunctuation() && first.pToken() == token::BEGIN_LIST))
@@ -111,9 +114,34 @@ Foam::fdm::particleList Foam::fdm::readParticleList
         is >> g >> x >> a;
         expectPunctuation(is, token::END_LIST, "at the end of a row");
 
+        if (!std::isfinite(a) || !std::isfinite(cmptSum(cmptMag(x))))
+        {
+            FatalIOErrorInFunction(is)
+                << "Particle " << list.group.size() << " in " << is.name()
+                << " has a position or radius that is not a finite number"
+                << " (" << x << ' ' << a << ")" << exit(FatalIOError);
+        }
+
         list.group.append(g);
         list.position.append(x);
         list.radius.append(a);
+    }
+
+    if (count >= 0 && count != list.group.size())
+    {
+        FatalIOErrorInFunction(is)
+            << "The particle list in " << is.name() << " announces " << count
+            << " particles but holds " << list.group.size() << " rows" << nl
+            << "    correct the count before the list or remove it"
+            << exit(FatalIOError);
+    }
+    if (list.group.empty())
+    {
+        FatalIOErrorInFunction(is)
+            << "The particle list in " << is.name() << " is empty" << nl
+            << "    for a particle-free flow remove constant/"
+            << "particleProperties; otherwise list rows (group (x y z) radius)"
+            << exit(FatalIOError);
     }
 
     return list;

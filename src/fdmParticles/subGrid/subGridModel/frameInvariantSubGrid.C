@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "frameInvariantSubGrid.H"
+#include "checkKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 #include "pairSearch.H"
 #include "volFields.H"
@@ -111,6 +112,12 @@ Foam::frameInvariantSubGrid::frameInvariantSubGrid
     pairCutoff_(0),
     wallCutoff_(0)
 {
+    fdm::checkKeywords
+    (
+        dict, {"model", "pairTables", "walls", "wallTable"},
+        "subGrid block, model frameInvariant"
+    );
+
     // Tables are for a1 = 1 scaled by the particle radius; the smallest
     // radius sets Delta/a1 (thesis: a1 = 1, Delta = a1/5)
     const scalar aSmall = radii.empty() ? 1 : min(radii);

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "subGridModel.H"
+#include "checkKeywords.H"
 #include "addToRunTimeSelectionTable.H"
 
 namespace Foam
@@ -22,6 +23,20 @@ Foam::subGridModel::subGridModel(const fvMesh& mesh)
 {}
 
 
+Foam::noSubGrid::noSubGrid
+(
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const settings&,
+    const scalarField&
+)
+:
+    subGridModel(mesh)
+{
+    fdm::checkKeywords(dict, {"model"}, "subGrid block, model none");
+}
+
+
 Foam::autoPtr<Foam::subGridModel> Foam::subGridModel::New
 (
     const dictionary& particleProperties,
@@ -33,15 +48,12 @@ Foam::autoPtr<Foam::subGridModel> Foam::subGridModel::New
     const dictionary dict(particleProperties.subOrEmptyDict("subGrid"));
     const word model(dict.getOrDefault<word>("model", "none"));
 
+    fdm::checkChoice
+    (
+        particleProperties, "subGrid model", model,
+        dictionaryConstructorTablePtr_->sortedToc()
+    );
     auto cstrIter = dictionaryConstructorTablePtr_->cfind(model);
-    if (!cstrIter.found())
-    {
-        FatalIOErrorInFunction(particleProperties)
-            << "Unknown subGrid model " << model << " in "
-            << particleProperties.name() << nl
-            << "    allowed: " << dictionaryConstructorTablePtr_->sortedToc()
-            << exit(FatalIOError);
-    }
     return cstrIter()(dict, mesh, s, radii);
 }
 

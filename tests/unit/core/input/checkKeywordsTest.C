@@ -1,0 +1,88 @@
+// Unit tests of the strict keyword check: the edit distance against
+// hand-counted values, the nearest spelling of the misspellings users make,
+// and the check itself on small dictionaries.
+
+#include "checkKeywords.H"
+#include "IStringStream.H"
+#include <gtest/gtest.h>
+
+using namespace Foam;
+
+namespace
+{
+
+dictionary parse(const char* text)
+{
+    IStringStream is(text);
+    return dictionary(is);
+}
+
+} // namespace
+
+
+TEST(editDistance, handCountedValues)
+{
+    EXPECT_EQ(fdm::editDistance("", ""), 0u);
+    EXPECT_EQ(fdm::editDistance("", "abc"), 3u);
+    EXPECT_EQ(fdm::editDistance("kitten", "sitting"), 3u);
+    // Case is ignored: subgrid is subGrid
+    EXPECT_EQ(fdm::editDistance("subgrid", "subGrid"), 0u);
+    // One deletion, one transposition (two substitutions)
+    EXPECT_EQ(fdm::editDistance("gravty", "gravity"), 1u);
+    EXPECT_EQ(fdm::editDistance("frictoin", "friction"), 2u);
+}
+
+
+TEST(nearestSpelling, misspeltKeywords)
+{
+    const std::vector<std::string> top
+    {
+        "coupling", "gravity", "gapFloor", "groups", "indicator",
+        "particles", "particlesFile", "subGrid", "contact", "output"
+    };
+    EXPECT_EQ(fdm::nearestSpelling("subgrid", top), "subGrid");
+    EXPECT_EQ(fdm::nearestSpelling("contacts", top), "contact");
+    EXPECT_EQ(fdm::nearestSpelling("gravty", top), "gravity");
+    EXPECT_EQ(fdm::nearestSpelling("particleFile", top), "particlesFile");
+    EXPECT_EQ(fdm::nearestSpelling("anything", {}), "");
+}
+
+
+TEST(checkKeywords, acceptsAllowedAndHeader)
+{
+    FatalIOError.throwExceptions();
+    const dictionary d(parse("FoamFile { version 2.0; } a 1; b { c 2; }"));
+    EXPECT_NO_THROW(fdm::checkKeywords(d, {"a", "b"}));
+}
+
+
+TEST(checkKeywords, stopsOnUnknownKeywordNamingTheNearest)
+{
+    FatalIOError.throwExceptions();
+    const dictionary d(parse("roughness 5e-3; frictoin 0.5;"));
+    try
+    {
+        fdm::checkKeywords(d, {"roughness", "friction", "kn"}, "contact");
+        FAIL() << "frictoin was accepted";
+    }
+    catch (const Foam::error& e)
+    {
+        const std::string msg(e.message());
+        EXPECT_NE(msg.find("'frictoin'"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("'friction'"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("contact"), std::string::npos) << msg;
+    }
+}
+
+
+TEST(checkChoice, stopsOnUnknownValue)
+{
+    FatalIOError.throwExceptions();
+    const dictionary d(parse("model hertx;"));
+    EXPECT_NO_THROW(fdm::checkChoice(d, "model", "hertz", {"hertz", "none"}));
+    EXPECT_THROW
+    (
+        fdm::checkChoice(d, "model", "hertx", {"hertz", "none"}),
+        Foam::error
+    );
+}
