@@ -26,14 +26,28 @@ cloneCase contactOnWall "$work/straight"
     foamDictionary -entry startFrom -set latestTime system/controlDict \
         > /dev/null
     runLogged fdmSuspensionFoam
-    # The same restart without the particle state must stop, not go on
-    # from the initial positions
+    # The same restart without the particle state, asked for explicitly
+    # (startTime 1), must stop, not go on from the initial positions; with
+    # latestTime the time is incomplete: set aside, the run starts at 0
     mkdir ../noState
     cp -r 0 1 constant system ../noState/
     rm ../noState/1/particleState
+    cp -r ../noState ../noStateLatest
+    foamDictionary -entry startFrom -set startTime ../noState/system/controlDict \
+        > /dev/null
+    foamDictionary -entry startTime -set 1 ../noState/system/controlDict \
+        > /dev/null
 ) || exit 1
 expectStop "$work/noState" fdmSuspensionFoam 'particleState" is missing' \
     || exit 1
+(
+    cd "$work/noStateLatest" || exit 1
+    foamDictionary -entry endTime -set 0 system/controlDict > /dev/null
+    runLogged fdmSuspensionFoam || exit 1
+    [ -d 1.incomplete ] && grep -q "was not completely written" \
+        log.fdmSuspensionFoam
+) || { echo "FAILED: incomplete time 1 not set aside"; exit 1; }
+echo "   noStateLatest: time 1 set aside as 1.incomplete, started at 0"
 cloneCase contactOnWall "$work/parallel"
 (
     cd "$work/parallel" || exit 1

@@ -93,11 +93,24 @@ expectStopIn()
     expectStop "$dir" fdmSuspensionFoam "$message" || fail "$variant"
 }
 
-# 4. Divergence: U relaxation 0.999 without acceleration
-expectStopIn diverging "outer iteration diverged" \
-    "sed -i 's/^\( *U  *\)0.9;/\1 0.999;/; s/acceleration .*;/acceleration none;/' system/fvSolution"
-[ -z "$(ls -d "$work/diverging/"0.* 2> /dev/null)" ] \
-    && [ ! -f "$work/diverging/postProcessing/particles.h5" ] \
+# 4. Divergence: the Couette tutorial's 25 spheres with U relaxation 0.99
+#    and no acceleration diverge in the first solve
+diverging="$work/diverging"
+mkdir -p "$diverging"
+cp -r "$FDM_PROJECT_DIR/tutorials/couette/"{0,constant,system} "$diverging"/
+(
+    cd "$diverging" || exit 1
+    runLogged fdmPackParticles --box 8 8 8 --walls y --phi 0.3 --seed 1 \
+        -o constant/particleList || exit 1
+    runLogged blockMesh || exit 1
+    sed -i 's/^\( *U  *\)0.9;/\1 0.99;/; s/acceleration .*;/acceleration none;/' \
+        system/fvSolution
+) || exit 1
+expectStop "$diverging" fdmSuspensionFoam "outer iteration diverged" \
+    || fail diverging
+[ -z "$(ls -d "$diverging/"0.* 2> /dev/null)" ] \
+    && [ ! -f "$diverging/0/particleState" ] \
+    && [ ! -f "$diverging/postProcessing/particles.h5" ] \
     || fail "diverging run wrote a time or records"
 
 # 5. Physical input
@@ -107,16 +120,16 @@ expectStopIn negativeDeltaT "allowed values are finite numbers > 0" \
     foamDictionary -entry deltaT -set -0.05 system/controlDict
 expectStopIn endBeforeStart "is before the start time" \
     foamDictionary -entry endTime -set -1 system/controlDict
-expectStopIn hugePosition "not a finite number" \
-    "sed -i 's/(1.55 0.52 1.47)/(1e400 0.52 1.47)/' constant/particleProperties"
+expectStopIn hugePosition "ill defined primitiveEntry starting at keyword 'particles'" \
+    "sed -i 's/( 1.55 0.52 1.47 )/( 1e400 0.52 1.47 )/' constant/particleProperties"
 expectStopIn emptyList "is empty" \
-    foamDictionary -entry particles -set '()' constant/particleProperties
+    "sed -i 's/^particles .*;/particles ();/' constant/particleProperties"
 expectStopIn wrongCount "announces 3 particles but holds 2" \
-    "sed -i 's/^particles *$/particles 3/' constant/particleProperties"
+    "sed -i 's/^particles *( (/particles 3( (/' constant/particleProperties"
 changed="$work/changedRadius"
 cp -r "$work/straight" "$changed"
 rm -rf "$changed/0.4"
-sed -i 's/(4.45 0.03 4.51) 1)/(4.45 0.03 4.51) 1.1)/' \
+sed -i 's/( 4.45 0.03 4.51 ) 1 )/( 4.45 0.03 4.51 ) 1.1 )/' \
     "$changed/constant/particleProperties"
 expectStop "$changed" fdmSuspensionFoam \
     "differ from those of the run being continued" || fail changedRadius

@@ -9,6 +9,10 @@
 #include "pairSearch.H"
 #include "constants.H"
 #include "checkKeywords.H"
+#include "particleList.H"
+#include "sigFpe.H"
+#include "IFstream.H"
+#include <cfenv>
 #include <sstream>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -29,6 +33,35 @@ Foam::word brief(const double x)
 } // namespace
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::fdmParticleCloud::checkNumbers(const fvMesh& mesh)
+{
+    const fileName file =
+        mesh.time().globalPath()/mesh.time().constant()/"particleProperties";
+    if (!isFile(file))
+    {
+        return true;
+    }
+    const bool trapping = sigFpe::requested();
+    sigFpe::unset();
+    {
+        IFstream is(file);
+        const dictionary d(is);
+        if (d.found("particles") || d.found("particlesFile"))
+        {
+            const fileName constant =
+                mesh.time().globalPath()/mesh.time().constant();
+            fdm::readParticleList(d, constant);
+        }
+    }
+    std::feclearexcept(FE_ALL_EXCEPT);
+    if (trapping)
+    {
+        sigFpe::set();
+    }
+    return true;
+}
+
 
 Foam::scalar Foam::fdmParticleCloud::meshSpacing() const
 {
@@ -217,6 +250,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
 )
 :
     mesh_(mesh),
+    numbersChecked_(checkNumbers(mesh)),
     dict_
     (
         IOobject
