@@ -9,10 +9,6 @@
 #include "pairSearch.H"
 #include "constants.H"
 #include "checkKeywords.H"
-#include "particleList.H"
-#include "sigFpe.H"
-#include "IFstream.H"
-#include <cfenv>
 #include <sstream>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -33,35 +29,6 @@ Foam::word brief(const double x)
 } // namespace
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-bool Foam::fdmParticleCloud::checkNumbers(const fvMesh& mesh)
-{
-    const fileName file =
-        mesh.time().globalPath()/mesh.time().constant()/"particleProperties";
-    if (!isFile(file))
-    {
-        return true;
-    }
-    const bool trapping = sigFpe::requested();
-    sigFpe::unset();
-    {
-        IFstream is(file);
-        const dictionary d(is);
-        if (d.found("particles") || d.found("particlesFile"))
-        {
-            const fileName constant =
-                mesh.time().globalPath()/mesh.time().constant();
-            fdm::readParticleList(d, constant);
-        }
-    }
-    std::feclearexcept(FE_ALL_EXCEPT);
-    if (trapping)
-    {
-        sigFpe::set();
-    }
-    return true;
-}
-
 
 Foam::scalar Foam::fdmParticleCloud::meshSpacing() const
 {
@@ -250,7 +217,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
 )
 :
     mesh_(mesh),
-    numbersChecked_(checkNumbers(mesh)),
+    readingTrapsOff_(),
     dict_
     (
         IOobject
@@ -283,9 +250,10 @@ Foam::fdmParticleCloud::fdmParticleCloud
     lastSolve_{0, 0, true},
     lambdaResidual_(0)
 {
+    readingTrapsOff_.restore();
     if (!dict_.headerOk())
     {
-        fdm::requireHeader(dict_.objectPath(), false);
+        fdm::requireHeader(dict_.objectPath());
         Info<< "No constant/particleProperties: particle-free Stokes flow"
             << nl << endl;
         return;

@@ -232,40 +232,22 @@ Foam::label Foam::particleHDF5Files::readSegmentList
 }
 
 
-Foam::label Foam::particleHDF5Files::nRecords(const fileName& path)
+bool Foam::particleHDF5Files::readTimes
+(
+    const fileName& path,
+    scalarList& times
+)
 {
+    times.clear();
     const hid_t f = openReadOnly(path);
     if (f < 0)
     {
-        return 0;
+        return false;
     }
-    const label n = readAll(f, "time").size();
-    H5Fclose(f);
-    return n;
-}
-
-
-Foam::label Foam::particleHDF5Files::nRecordsBefore
-(
-    const fileName& path,
-    const scalar startTime
-)
-{
-    const hid_t f = openReadOnly(path);
-    check(f >= 0, "opening", path);
     const std::vector<double> t = readAll(f, "time");
     H5Fclose(f);
-
-    label keep = 0;
-    while
-    (
-        keep < label(t.size())
-     && t[keep] < startTime - 1e-12*(1 + mag(startTime))
-    )
-    {
-        ++keep;
-    }
-    return keep;
+    times = scalarList(t.begin(), t.end());
+    return true;
 }
 
 

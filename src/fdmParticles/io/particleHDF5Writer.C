@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 #include <fcntl.h>
+#include "SubList.H"
 
 using namespace Foam::particleHDF5Files;
 
@@ -41,6 +42,37 @@ fileName freeName(const fileName& path, const word& suffix)
         name = path + "." + suffix + Foam::name(i);
     }
     return name;
+}
+
+//- Records of a segment, 0 when it cannot be read (a kill while it was
+//  created)
+label nRecords(const fileName& path)
+{
+    scalarList t;
+    particleHDF5Files::readTimes(path, t);
+    return t.size();
+}
+
+//- Records of a committed segment before startTime (round-off tolerant)
+label nRecordsBefore(const fileName& path, const scalar startTime)
+{
+    scalarList t;
+    if (!particleHDF5Files::readTimes(path, t))
+    {
+        FatalErrorInFunction
+            << "Cannot open " << path << ", listed in particles.h5: move"
+            << " postProcessing/particles.h5 and postProcessing/particles/"
+            << " away to start a new series" << exit(FatalError);
+    }
+    label keep = 0;
+    while
+    (
+        keep < t.size() && t[keep] < startTime - 1e-12*(1 + mag(startTime))
+    )
+    {
+        ++keep;
+    }
+    return keep;
 }
 
 //- particles/segment<k>.h5, relative to postProcessing
@@ -99,8 +131,15 @@ void Foam::particleHDF5Writer::recover(const scalar startTime)
         }
         else if (status == plainSeries)
         {
+            // Hard-linked, not moved: until the particles.h5 written below
+            // replaces it, the old file stays what a kill would leave
             const fileName seg = segmentName(nextSegment());
-            mv(path_, dir/seg);
+            if (::link(path_.c_str(), (dir/seg).c_str()) != 0)
+            {
+                FatalErrorInFunction
+                    << "Cannot link " << path_ << " to " << dir/seg
+                    << exit(FatalError);
+            }
             segments_.append(seg);
             records_.append(nRecords(dir/seg));
             Info<< "particles.h5: series of an earlier version kept as "
@@ -139,31 +178,29 @@ void Foam::particleHDF5Writer::recover(const scalar startTime)
         {
             continue;
         }
-        label dropped = records_[i] - keep;
-        for (label j = i + 1; j < segments_.size(); ++j)
+        // The new list first, then particles.h5 over it, and only then
+        // the files it no longer lists are removed: a kill at any point
+        // leaves a particles.h5 whose segments all exist
+        const List<fileName> obsolete(SubList<fileName>(segments_,
+            segments_.size() - i, i));
+        label dropped = -keep;
+        for (label j = i; j < records_.size(); ++j)
         {
             dropped += records_[j];
-            rm(dir/segments_[j]);
         }
-        segments_.setSize(i + 1);
-        records_.setSize(i + 1);
+        segments_.setSize(i);
+        records_.setSize(i);
         if (keep > 0)
         {
-            // Replace by a copy of its first records (the original stays
-            // listed until the new particles.h5 is in place)
             const fileName seg = segmentName(nextSegment());
             copyRecords(file, dir/seg, keep);
-            segments_[i] = seg;
-            records_[i] = keep;
-            writeMaster();
-            rm(file);
+            segments_.append(seg);
+            records_.append(keep);
         }
-        else
+        writeMaster();
+        for (const fileName& f : obsolete)
         {
-            segments_.setSize(i);
-            records_.setSize(i);
-            writeMaster();
-            rm(file);
+            rm(dir/f);
         }
         Info<< "particles.h5: dropped " << dropped << " record(s) at or"
             << " after the start time " << startTime << " (this run"

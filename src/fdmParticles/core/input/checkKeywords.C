@@ -119,9 +119,9 @@ void Foam::fdm::checkChoice
 }
 
 
-void Foam::fdm::requireHeader(const fileName& file, const bool headerOk)
+void Foam::fdm::requireHeader(const fileName& file)
 {
-    if (!headerOk && isFile(file))
+    if (isFile(file))
     {
         FatalErrorInFunction
             << file << " exists but cannot be read as an OpenFOAM"
