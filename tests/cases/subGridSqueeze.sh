@@ -11,8 +11,12 @@ work=$(caseWorkDir subGridSqueeze)
 for model in frameInvariant none
 do
     cloneCase subGridSqueeze "$work/$model"
-    foamDictionary -entry subGrid.model -set $model \
-        "$work/$model/constant/particleProperties" > /dev/null || exit 1
+    # "none" takes no other keyword, so the block is replaced whole
+    if [ "$model" = none ]
+    then
+        foamDictionary -entry subGrid -set "{ model none; }" \
+            "$work/$model/constant/particleProperties" > /dev/null || exit 1
+    fi
     (
         cd "$work/$model" || exit 1
         runLogged blockMesh && runLogged fdmSuspensionFoam
