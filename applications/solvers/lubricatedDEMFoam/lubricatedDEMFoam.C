@@ -83,6 +83,7 @@ Description
 #include "checkTimeControls.H"
 #include "readBounded.H"
 #include "HashSet.H"
+#include "freshOutputFile.H"
 
 using namespace Foam;
 

@@ -12,6 +12,7 @@ import os
 
 import numpy as np
 
+from fdmPost.particleCase import series_files, series_rows
 from fdmPost.rheology import block_mean
 from fdmPost.suspensionBalance import PHI_RCP, lambda33
 
@@ -87,20 +88,17 @@ def dem_state(path):
 
 
 def read_series(case):
-    """Concatenate the stress.dat files of a case (restarts in time order)."""
-    files = sorted(glob.glob(os.path.join(
-        case, "postProcessing", "lubricatedDEM", "*", "stress.dat")),
-        key=lambda f: float(os.path.basename(os.path.dirname(f))))
-    if not files:
-        raise SystemExit("no postProcessing/lubricatedDEM/*/stress.dat in "
-                         + case)
+    """The stress.dat rows of a case, restarts in time order, one row per
+    time."""
+    try:
+        files = series_files(case, "lubricatedDEM", "stress")
+    except FileNotFoundError as e:
+        raise SystemExit(str(e))
     with open(files[0]) as f:
         head = f.readline()
     eta = float(head.split("viscosity")[1].split(",")[0])
     rate = float(head.split("shear rate")[1])
-    d = np.vstack([np.loadtxt(f, ndmin=2) for f in files])
-    _, keep = np.unique(d[:, 0], return_index=True)
-    return d[keep], eta, rate
+    return series_rows(files), eta, rate
 
 
 def averages(case, start_strain, blocks=5):

@@ -50,15 +50,40 @@ def particle_state(case, time):
     return state
 
 
-def momentum_balance(case):
-    """Rows of the momentum-balance file as a dict of arrays: time (n),
-    lambdaV, lambdaParts, wall, pressure, meanU (n x 3)."""
-    files = sorted(glob.glob(os.path.join(
-        case, "postProcessing", "momentumBalance", "*",
-        "momentumBalance.dat")))
-    if not files:
-        raise FileNotFoundError("no momentumBalance.dat in %s" % case)
+def series_files(case, folder, name):
+    """The files postProcessing/<folder>/<t0>/<name>.dat and <name>_<k>.dat
+    of a case in run order: by start time t0, then k (a run restarted from
+    the same time writes <name>_1.dat beside the earlier file)."""
+    pattern = re.compile(re.escape(name) + r"(?:_(\d+))?\.dat$")
+    found = []
+    for path in glob.glob(os.path.join(case, "postProcessing", folder, "*",
+                                       name + "*.dat")):
+        m = pattern.match(os.path.basename(path))
+        try:
+            t0 = float(os.path.basename(os.path.dirname(path)))
+        except ValueError:
+            continue
+        if m:
+            found.append((t0, int(m.group(1) or 0), path))
+    if not found:
+        raise FileNotFoundError("no postProcessing/%s/*/%s.dat in %s"
+                                % (folder, name, case))
+    return [path for _, _, path in sorted(found)]
+
+
+def series_rows(files):
+    """The rows of time-series files (time in the first column) in run
+    order, one row per time: where runs overlap, the later run's row."""
     data = np.vstack([np.loadtxt(f, ndmin=2) for f in files])
+    _, last = np.unique(data[::-1, 0], return_index=True)
+    return data[::-1][last]
+
+
+def momentum_balance(case):
+    """Rows of the momentum-balance files as a dict of arrays: time (n),
+    lambdaV, lambdaParts, wall, pressure, meanU (n x 3)."""
+    data = series_rows(series_files(case, "momentumBalance",
+                                    "momentumBalance"))
     names = ["lambdaV", "lambdaParts", "wall", "pressure", "meanU"]
     out = {"time": data[:, 0]}
     for i, n in enumerate(names):

@@ -6,6 +6,7 @@
 #include "momentumBalance.H"
 #include "fvc.H"
 #include "OSspecific.H"
+#include "freshOutputFile.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -19,7 +20,10 @@ Foam::momentumBalance::momentumBalance(const fvMesh& mesh)
             mesh.time().globalPath()/"postProcessing"/"momentumBalance"
            /mesh.time().timeName();
         mkDir(dir);
-        file_.reset(new OFstream(dir/"momentumBalance.dat"));
+        file_.reset
+        (
+            new OFstream(fdm::freshOutputFile(dir, "momentumBalance"))
+        );
         file_().precision(12);
         file_()
             << "# Mechanical consistency (thesis 1, eqs 4.14-4.16), per unit"

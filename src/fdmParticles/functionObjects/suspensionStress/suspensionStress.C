@@ -7,6 +7,8 @@
 #include "addToRunTimeSelectionTable.H"
 #include "IFstream.H"
 #include "OFstream.H"
+#include "OSspecific.H"
+#include "freshOutputFile.H"
 #include "checkKeywords.H"
 #include "IOdictionary.H"
 #include "Time.H"
@@ -105,7 +107,7 @@ void Foam::functionObjects::suspensionStress::writeProfiles
 {
     const fileName dir = baseTimeDir();
     mkDir(dir);
-    OFstream os(dir/"profiles.dat");
+    OFstream os(fdm::freshOutputFile(dir, "profiles"));
     os.precision(writePrecision_);
     const word n(vector::componentNames[normal_]);
     os  << "# Suspension profiles (thesis 1 eqs 2.70, 2.75, 6.4, 6.5) at "
@@ -126,6 +128,29 @@ void Foam::functionObjects::suspensionStress::writeProfiles
 }
 
 
+Foam::autoPtr<Foam::OFstream>
+Foam::functionObjects::suspensionStress::createFile
+(
+    const word& name,
+    scalar timeValue
+) const
+{
+    autoPtr<OFstream> os;
+    if (Pstream::master() && writeToFile_)
+    {
+        if (useUserTime_)
+        {
+            timeValue = time_.timeToUserTime(timeValue);
+        }
+        const fileName dir = baseFileDir()/prefix_/Time::timeName(timeValue);
+        mkDir(dir);
+        os.reset(new OFstream(fdm::freshOutputFile(dir, name)));
+        initStream(os());
+    }
+    return os;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::functionObjects::suspensionStress::suspensionStress
@@ -136,7 +161,7 @@ Foam::functionObjects::suspensionStress::suspensionStress
 )
 :
     fvMeshFunctionObject(name, runTime, dict),
-    writeFile(mesh_, name, typeName, dict),
+    writeFile(mesh_, name, typeName),
     normal_(1),
     flow_(0),
     bins_(20),
@@ -144,6 +169,7 @@ Foam::functionObjects::suspensionStress::suspensionStress
     eta_(0)
 {
     read(dict);
+    resetFile(typeName);
 
     OFstream& os = file();
     writeHeader(os, "Suspension stress (thesis 1 eqs 2.70-2.76, 4.13)");
