@@ -6,6 +6,7 @@
 #include "mathematicalConstants.H"
 #include "OStringStream.H"
 #include "IStringStream.H"
+#include "scalarList.H"
 
 #include <gtest/gtest.h>
 #include <cfenv>
@@ -282,6 +283,30 @@ TEST(lubricatedDEM, restartFromTheWrittenStateIsBitwise)
         EXPECT_EQ(straight.positions()[i], restarted.positions()[i]) << i;
         EXPECT_EQ(straight.spins()[i], restarted.spins()[i]) << i;
     }
+}
+
+
+TEST(lubricatedDEM, writtenStateOfPairsThatNeverInteractedIsDefined)
+{
+    // Two fixed spheres nearly touching: listed, never stepped (their loads
+    // move nothing), so only the pair search defines their state
+    fdm::lubricatedDEM dem
+    (
+        cube(40), 1, fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-3, 0.4, 4)
+    );
+    dem.addParticle(point(20, 20, 20), 1, 1, false);
+    dem.addParticle(point(20, 22.01, 20), 1, 1, false);
+    dem.addParticle(point(10, 10, 10), 1, 1);
+    dem.step(1e-3);
+
+    OStringStream os;
+    dem.writeState(os);
+    IStringStream is(os.str());
+    const dictionary state(is);
+    ASSERT_EQ(state.get<List<labelPair>>("pairs").size(), 1);
+    EXPECT_EQ(state.get<scalarList>("pairLogGap")[0], 0);
+    EXPECT_FALSE(state.get<boolList>("pairContact")[0]);
+    EXPECT_EQ(state.get<List<vector>>("pairShearForce")[0], vector::zero);
 }
 
 

@@ -72,10 +72,12 @@ void Foam::fdm::lubricatedDEM::searchPairs()
     DynamicList<labelPair> pairs;
     findNearPairs(box_, position_, radius_, reach() + skin_, pairs);
 
-    // Carry the history of pairs listed before (both lists sorted)
+    // Carry the history of pairs listed before (both lists sorted); a new
+    // pair starts inactive with a defined state (written to particleState
+    // even before it interacts)
     DynamicList<lubricatedPairState> states(pairs.size());
     boolList active(pairs.size(), false);
-    states.setSize(pairs.size());
+    states.resize(pairs.size(), lubricatedPairState{0, false, Zero});
     label old = 0;
     forAll(pairs, k)
     {
