@@ -74,6 +74,11 @@ int main(int argc, char *argv[])
     label nOuterTotal = 0;
     const label startTimeIndex = runTime.timeIndex();
 
+    // Function objects read (and their keywords checked) now rather than
+    // at the first runTime.loop(), after the initial solve; loop() keeps
+    // them (functionObjectList::read re-reads only changed dictionaries)
+    runTime.functionObjects().start();
+
     particles.prepare(lambda);
     if (!particles.empty() && !particles.solved())
     {

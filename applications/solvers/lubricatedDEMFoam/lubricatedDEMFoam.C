@@ -84,6 +84,7 @@ Description
 #include "readBounded.H"
 #include "HashSet.H"
 #include "freshOutputFile.H"
+#include "checkKeywords.H"
 
 using namespace Foam;
 

@@ -6,7 +6,6 @@
 #include "fdmParticleCloud.H"
 #include "cyclicPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
-#include "pairSearch.H"
 #include "constants.H"
 #include "checkKeywords.H"
 #include <sstream>
@@ -125,18 +124,12 @@ Foam::fdm::periodicBox Foam::fdmParticleCloud::meshBox() const
 
 void Foam::fdmParticleCloud::checkParticles() const
 {
-    const fileName& file = dict_.name();
+    // What the mesh and the indicator need besides checkParticleList
+    const fileName file = dict_.objectPath();
     const scalar minCellsPerRadius = 2;
-
     forAll(position_, p)
     {
         const scalar a = radius_[p];
-        if (!(a > 0))
-        {
-            FatalIOErrorInFunction(dict_)
-                << "Particle " << p << " in " << file << " has radius " << a
-                << ": allowed values are > 0" << exit(FatalIOError);
-        }
         if (a < minCellsPerRadius*delta_)
         {
             FatalIOErrorInFunction(dict_)
@@ -149,49 +142,19 @@ void Foam::fdmParticleCloud::checkParticles() const
         }
         for (direction d = 0; d < 3; ++d)
         {
-            const scalar x = position_[p][d];
-            const scalar lo = box_.min()[d];
-            const scalar hi = lo + box_.span()[d];
-            if (box_.periodic(d))
-            {
-                if (box_.span()[d] < 2*indicator_.supportRadius(a))
-                {
-                    FatalIOErrorInFunction(dict_)
-                        << "Particle " << p << " in " << file << ": its"
-                        << " support diameter " << 2*indicator_.supportRadius(a)
-                        << " exceeds the periodic length " << box_.span()[d]
-                        << " in direction " << d << "." << exit(FatalIOError);
-                }
-            }
-            else if (x - a < lo || x + a > hi)
+            if
+            (
+                box_.periodic(d)
+             && box_.span()[d] < 2*indicator_.supportRadius(a)
+            )
             {
                 FatalIOErrorInFunction(dict_)
-                    << "Particle " << p << " in " << file << " at "
-                    << position_[p] << " with radius " << a
-                    << " is not inside the domain: along direction " << d
-                    << " it must lie within [" << brief(lo + a) << ", "
-                    << brief(hi - a)
-                    << "] (the domain spans [" << brief(lo) << ", "
-                    << brief(hi) << "])."
-                    << exit(FatalIOError);
+                    << "Particle " << p << " in " << file << ": its"
+                    << " support diameter " << 2*indicator_.supportRadius(a)
+                    << " exceeds the periodic length " << box_.span()[d]
+                    << " in direction " << d << "." << exit(FatalIOError);
             }
         }
-    }
-
-    DynamicList<labelPair> overlapping;
-    fdm::findNearPairs(box_, position_, radius_, 0, overlapping);
-    if (overlapping.size())
-    {
-        const labelPair& pq = overlapping.first();
-        const label p = pq.first(), q = pq.second();
-        FatalIOErrorInFunction(dict_)
-            << overlapping.size() << " overlapping particle pair(s) in "
-            << file << ", the first: particles " << p << " at "
-            << position_[p] << " (radius " << radius_[p] << ") and " << q
-            << " at " << position_[q] << " (radius " << radius_[q]
-            << "), centre distance "
-            << mag(box_.minimumImage(position_[q] - position_[p]))
-            << " < " << radius_[p] + radius_[q] << exit(FatalIOError);
     }
 }
 

@@ -149,6 +149,7 @@ void Foam::fdmParticleCloud::readParticles()
         group_[i] = groupIndex(list.group[i], dict_);
         list.position[i] = box_.wrap(list.position[i]);
     }
+    fdm::checkParticleList(list.position, list.radius, box_, list.source);
     radius_.transfer(list.radius);
     position_.transfer(list.position);
 }

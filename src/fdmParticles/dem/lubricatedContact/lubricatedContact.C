@@ -5,6 +5,7 @@
 
 #include "lubricatedContact.H"
 #include "readBounded.H"
+#include "checkKeywords.H"
 #include "mathematicalConstants.H"
 
 #include <cmath>
@@ -55,9 +56,25 @@ Foam::scalar Foam::fdm::lubricatedContact::gapUpdate
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fdm::lubricatedContact::lubricatedContact(const dictionary& dict)
-:
-    lubricatedContact
+namespace
+{
+
+//- The model of a lubricatedContact block, its keywords checked first
+Foam::fdm::lubricatedContact fromDictionary(const Foam::dictionary& dict)
+{
+    using namespace Foam;
+    using namespace Foam::fdm;
+    checkKeywords
+    (
+        dict,
+        {
+            "viscosity", "stiffness", "stiffnessRatio",
+            "tangentialStiffness", "roughness", "friction", "cutoff",
+            "shearArms"
+        },
+        "lubricatedContact block"
+    );
+    return lubricatedContact
     (
         readBounded(dict, "viscosity", VSMALL, GREAT, "fluid viscosity eta_f"),
         readBounded
@@ -88,11 +105,19 @@ Foam::fdm::lubricatedContact::lubricatedContact(const dictionary& dict)
             "interaction while the gap is below cutoff*a; thesis 2 (4 for"
             " the two-sphere test)"
         ),
-        shearArmsNames.lookupOrDefault
+        lubricatedContact::shearArmsNames.lookupOrDefault
         (
-            "shearArms", dict, shearArms::contactPoint
+            "shearArms", dict, lubricatedContact::shearArms::contactPoint
         )
-    )
+    );
+}
+
+} // namespace
+
+
+Foam::fdm::lubricatedContact::lubricatedContact(const dictionary& dict)
+:
+    lubricatedContact(fromDictionary(dict))
 {}
 
 

@@ -7,6 +7,8 @@
 #include "IFstream.H"
 #include "ITstream.H"
 #include "OSspecific.H"
+#include "pairSearch.H"
+#include "IOstreams.H"
 #include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -75,6 +77,7 @@ Foam::fdm::particleList Foam::fdm::readParticleList
     Istream& is = isPtr();
 
     particleList list;
+    list.source = inlineList ? fileName(dict.name()) : is.name();
 
     token first(is);
     label count = -1;
@@ -145,6 +148,65 @@ Foam::fdm::particleList Foam::fdm::readParticleList
     }
 
     return list;
+}
+
+
+void Foam::fdm::checkParticleList
+(
+    const UList<point>& positions,
+    const UList<scalar>& radii,
+    const periodicBox& box,
+    const fileName& file
+)
+{
+    List<point> wrapped(positions.size());
+    forAll(positions, p)
+    {
+        const scalar a = radii[p];
+        if (!(a > 0))
+        {
+            FatalErrorInFunction
+                << "Particle " << p << " in " << file << " has radius " << a
+                << ": allowed values are > 0" << exit(FatalError);
+        }
+        for (direction d = 0; d < 3; ++d)
+        {
+            const scalar lo = box.min()[d];
+            const scalar hi = lo + box.span()[d];
+            const scalar x = positions[p][d];
+            if (!box.periodic(d) && (x - a < lo || x + a > hi))
+            {
+                FatalErrorInFunction
+                    << "Particle " << p << " in " << file << " at "
+                    << positions[p] << " with radius " << a
+                    << " is not inside the domain: along direction "
+                    << vector::componentNames[d] << " it must lie within ["
+                    << lo + a << ", " << hi - a << "] (the domain spans ["
+                    << lo << ", " << hi << "])." << exit(FatalError);
+            }
+        }
+        wrapped[p] = box.wrap(positions[p]);
+    }
+
+    DynamicList<labelPair> overlapping;
+    findNearPairs(box, wrapped, radii, 0, overlapping);
+    if (overlapping.empty())
+    {
+        return;
+    }
+    const label p = overlapping.first().first();
+    const label q = overlapping.first().second();
+    const scalar distance =
+        mag(box.minimumImage(wrapped[q] - wrapped[p]));
+    FatalErrorInFunction
+        << overlapping.size() << " overlapping particle pair(s) in " << file
+        << ", the first: particles " << p << " at " << positions[p]
+        << " (radius " << radii[p] << ") and " << q << " at " << positions[q]
+        << " (radius " << radii[q] << "), centre distance " << distance
+        << " < " << radii[p] + radii[q]
+        << (distance < SMALL*radii[p] ? " (the same row twice?)" : "")
+        << nl << "    Move them apart: an initial list may not overlap"
+        << " (fdmPackParticles keeps a clearance --gap)" << exit(FatalError);
 }
 
 
