@@ -85,6 +85,7 @@ Description
 #include "HashSet.H"
 #include "freshOutputFile.H"
 #include "checkKeywords.H"
+#include "fpTrapsOff.H"
 
 using namespace Foam;
 
@@ -103,27 +104,41 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     fdm::checkTimeControls(runTime);
 
-    IOdictionary properties
+    IOobject propertiesIO
     (
-        IOobject
-        (
-            "particleProperties",
-            runTime.constant(),
-            runTime,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE
-        )
+        "particleProperties",
+        runTime.constant(),
+        runTime,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE
     );
+    if (!propertiesIO.typeHeaderOk<IOdictionary>(true))
+    {
+        fdm::requireHeader(propertiesIO.objectPath());
+    }
+    autoPtr<IOdictionary> propertiesPtr;
+    {
+        // A number out of range is the parser's error, not a trap
+        fdm::fpTrapsOff trapsOff;
+        propertiesPtr.reset(new IOdictionary(propertiesIO));
+    }
+    const IOdictionary& properties = propertiesPtr();
 
     fdm::lubricatedDEM dem = createDEM(properties, runTime);
     const scalar dt = runTime.deltaTValue();
     checkTimeStep(dem, dt, runTime);
 
     const dictionary output(properties.subOrEmptyDict("output"));
-    const label outputInterval =
-        max(label(1), output.getOrDefault<label>("interval", 100));
-    demSeries series(runTime, dem);
+    const label outputInterval = label
+    (
+        fdm::readBoundedOrDefault
+        (
+            output, "interval", 100, 1, labelMax,
+            "steps between time-series rows"
+        )
+    );
     demTracks tracks(runTime, dem, output);
+    demSeries series(runTime, dem);
 
     Info<< nl << "Starting time loop" << nl << endl;
 

@@ -136,12 +136,8 @@ Foam::label Foam::fdmParticleCloud::groupIndex
 
 void Foam::fdmParticleCloud::readParticles()
 {
-    fdm::particleList list;
-    {
-        // A particlesFile is parsed here: traps off as for dict_
-        fdm::fpTrapsOff trapsOff;
-        list = fdm::readParticleList(dict_, mesh_.time().constant());
-    }
+    fdm::particleList list =
+        fdm::readParticleList(dict_, mesh_.time().constant());
 
     group_.setSize(list.group.size());
     forAll(list.group, i)

@@ -8,6 +8,7 @@
 #include "ITstream.H"
 #include "OSspecific.H"
 #include "pairSearch.H"
+#include "fpTrapsOff.H"
 #include "IOstreams.H"
 #include <cmath>
 
@@ -57,6 +58,8 @@ Foam::fdm::particleList Foam::fdm::readParticleList
             << " relative to constant/)" << exit(FatalIOError);
     }
 
+    // A number out of range is the parser's error, not a trap
+    fpTrapsOff trapsOff;
     autoPtr<Istream> isPtr;
     if (inlineList)
     {

@@ -1,0 +1,121 @@
+#!/bin/bash
+# Case test: bad input to lubricatedDEMFoam and fdmPackParticles stops with
+# a message naming the file and the keyword, exit status non-zero, before
+# anything is written.  Each variant edits a valid small case (the
+# lubricatedShear tutorial in a 13^3 cell, 0.001 strain).
+source "${0%/*}/caseTestFunctions"
+
+work=$(caseWorkDir badInputDEM)
+base="$work/base"
+mkdir -p "$base"
+cp -r "$FDM_PROJECT_DIR/tutorials/lubricatedShear"/{system,constant} "$base"/
+sed -i 's/(16 16 16)/(13 13 13)/' "$base/constant/particleProperties"
+sed -i -e 's/^endTime .*/endTime 0.001;/' -e 's/^writeInterval .*/writeInterval 1;/' \
+    "$base/system/controlDict"
+(cd "$base" && runLogged fdmPackParticles --box 13 13 13 --walls '' \
+    --phi 0.3 --seed 2 -o constant/particleList) || exit 1
+(cd "$base" && runLogged lubricatedDEMFoam) || exit 1
+rm -rf "$base/postProcessing" "$base/log.lubricatedDEMFoam"
+
+failures=0
+pp=constant/particleProperties
+list=constant/particleList
+
+# expectFatal variant file sed-expression message...   (the messages must
+# name the file at fault, which is not always the one edited)
+expectFatal()
+{
+    local variant=$1 file=$2 edit=$3
+    shift 3
+    local dir="$work/$variant"
+    cp -r "$base" "$dir"
+    sed -i "$edit" "$dir/$file"
+
+    if (cd "$dir" && lubricatedDEMFoam > log.lubricatedDEMFoam 2>&1)
+    then
+        echo "  FAIL $variant: solver accepted the bad input"
+        failures=$((failures + 1))
+        return
+    fi
+    local expected
+    for expected in "FOAM FATAL" "$@"
+    do
+        if ! grep -q -- "$expected" "$dir/log.lubricatedDEMFoam"
+        then
+            echo "  FAIL $variant: message does not name '$expected'"
+            tail -n 12 "$dir/log.lubricatedDEMFoam"
+            failures=$((failures + 1))
+            return
+        fi
+    done
+    if [ -e "$dir/postProcessing" ] || ls -d "$dir"/[1-9]* > /dev/null 2>&1
+    then
+        echo "  FAIL $variant: wrote output before stopping"
+        failures=$((failures + 1))
+        return
+    fi
+    echo "  ok   $variant: stops naming $*"
+}
+
+# The first row of the list: (suspended (x y z) a)
+row1='0,/^(suspended/s/^(suspended (\([^)]*\)) \(.*\))$/'
+expectFatal zeroRadius $list "${row1}(suspended (\1) 0)/" \
+    particleList "has radius 0" "allowed values are > 0"
+expectFatal negativeRadius $list "${row1}(suspended (\1) -1)/" \
+    particleList "has radius -1" "allowed values are > 0"
+expectFatal emptyList $list '/^[0-9][0-9]*$/,$c 0\n(\n)' particleList "is empty"
+# (the count line removed: it is optional)
+expectFatal repeatedRow $list '/^[0-9][0-9]*$/d; 0,/^(suspended/{/^(suspended/p}' \
+    particleList "overlapping particle pair" "the same row twice"
+expectFatal overlapping $list \
+    '/^[0-9][0-9]*$/d; 0,/^(suspended/s/^(suspended .*$/(suspended (6.5 6.5 6.5) 1)\n(suspended (7.5 6.5 6.5) 1)/' \
+    particleList "overlapping particle pair" "centre distance"
+expectFatal countMismatch $list 's/^\([0-9][0-9]*\)$/1\1/' \
+    particleList "announces" "rows"
+expectFatal hugeNumber $list "${row1}(suspended (1e400 1 1) \2)/" \
+    particleList "could not get scalar value"
+expectFatal outsideOpenCell $pp 's/shearRate   1;/&\n    open (y);/' \
+    particleList "not inside the domain" "along direction y"
+expectFatal zeroTimeStep system/controlDict 's/^deltaT .*/deltaT 0;/' \
+    controlDict "deltaT"
+expectFatal negativeEnd system/controlDict 's/^endTime .*/endTime -1;/' \
+    controlDict "endTime"
+expectFatal missingHeader $pp '/^FoamFile/,/^}/d' particleProperties "needs the FoamFile header"
+expectFatal misspeltTopLevel $pp 's/^density /densty /' \
+    particleProperties "Unknown keyword 'densty'" "nearest valid spelling: 'density'"
+expectFatal misspeltBlock $pp 's/^output/outputs/' \
+    particleProperties "Unknown keyword 'outputs'" "nearest valid spelling: 'output'"
+expectFatal misspeltCellKey $pp 's/shearRate   1;/shearrate 1;/' \
+    particleProperties "Unknown keyword 'shearrate'" "nearest valid spelling: 'shearRate'"
+expectFatal misspeltContactKey $pp 's/friction   /frictoin   /' \
+    particleProperties "Unknown keyword 'frictoin'" "nearest valid spelling: 'friction'"
+expectFatal zeroInterval $pp 's/interval    100;/interval 0;/' \
+    particleProperties "interval" "steps between time-series rows"
+expectFatal trackMissing $pp 's/interval    100;/& track (5000);/' \
+    particleProperties "particle 5000 does not exist"
+
+# fdmPackParticles: refused, and nothing written
+expectRefused()
+{
+    local variant=$1 message=$2
+    shift 2
+    local out="$work/$variant/particleList"
+    mkdir -p "$work/$variant"
+    if fdmPackParticles "$@" -o "$out" > "$work/$variant/log" 2>&1
+    then
+        echo "  FAIL $variant: fdmPackParticles accepted $*"
+        failures=$((failures + 1))
+    elif ! grep -q -- "$message" "$work/$variant/log" || [ -e "$out" ]
+    then
+        echo "  FAIL $variant: no '$message', or a list written"
+        tail -n 5 "$work/$variant/log"
+        failures=$((failures + 1))
+    else
+        echo "  ok   $variant: fdmPackParticles $* refused: $message"
+    fi
+}
+expectRefused packNegativeGap "--gap -1" --box 8 8 8 --phi 0.3 --gap -1
+expectRefused packUnreachablePhi "give 0.2681" --box 2.5 2.5 2.5 --phi 0.5
+expectRefused packZeroRadius "--radius 0" --box 8 8 8 --phi 0.3 --radius 0
+
+[ "$failures" -eq 0 ]
