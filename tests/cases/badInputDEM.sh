@@ -1,7 +1,8 @@
 #!/bin/bash
-# Case test: bad input to lubricatedDEMFoam and fdmPackParticles stops with
-# a message naming the file and the keyword, exit status non-zero, before
-# anything is written.  Each variant edits a valid small case (the
+# Case test: bad input to lubricatedDEMFoam and to the utilities
+# (fdmPackParticles, fdmSuspensionBalance) stops with a message naming the
+# file and the keyword or option, exit status non-zero, before anything is
+# written.  Each solver variant edits a valid small case (the
 # lubricatedShear tutorial in a 13^3 cell, 0.001 strain).
 source "${0%/*}/caseTestFunctions"
 
@@ -94,28 +95,40 @@ expectFatal zeroInterval $pp 's/interval    100;/interval 0;/' \
 expectFatal trackMissing $pp 's/interval    100;/& track (5000);/' \
     particleProperties "particle 5000 does not exist"
 
-# fdmPackParticles: refused, and nothing written
+# Utilities: refused with the option and what is allowed, nothing written
 expectRefused()
 {
-    local variant=$1 message=$2
-    shift 2
-    local out="$work/$variant/particleList"
+    local variant=$1 message=$2 utility=$3
+    shift 3
+    local out="$work/$variant/out"
     mkdir -p "$work/$variant"
-    if fdmPackParticles "$@" -o "$out" > "$work/$variant/log" 2>&1
+    if "$utility" "$@" -o "$out" > "$work/$variant/log" 2>&1
     then
-        echo "  FAIL $variant: fdmPackParticles accepted $*"
+        echo "  FAIL $variant: $utility accepted $*"
         failures=$((failures + 1))
-    elif ! grep -q -- "$message" "$work/$variant/log" || [ -e "$out" ]
+    elif ! grep -q -- "$message" "$work/$variant/log" \
+        || grep -q Traceback "$work/$variant/log" || ls "$out"* > /dev/null 2>&1
     then
-        echo "  FAIL $variant: no '$message', or a list written"
+        echo "  FAIL $variant: no '$message', a traceback, or output written"
         tail -n 5 "$work/$variant/log"
         failures=$((failures + 1))
     else
-        echo "  ok   $variant: fdmPackParticles $* refused: $message"
+        echo "  ok   $variant: $utility $* refused: $message"
     fi
 }
-expectRefused packNegativeGap "--gap -1" --box 8 8 8 --phi 0.3 --gap -1
-expectRefused packUnreachablePhi "give 0.2681" --box 2.5 2.5 2.5 --phi 0.5
-expectRefused packZeroRadius "--radius 0" --box 8 8 8 --phi 0.3 --radius 0
+expectRefused packNegativeGap "--gap -1" fdmPackParticles \
+    --box 8 8 8 --phi 0.3 --gap -1
+expectRefused packUnreachablePhi "give 0.2681" fdmPackParticles \
+    --box 2.5 2.5 2.5 --phi 0.5
+expectRefused packZeroRadius "--radius 0" fdmPackParticles \
+    --box 8 8 8 --phi 0.3 --radius 0
+expectRefused sbmJammingAboveDensest "--phij 1.5" fdmSuspensionBalance \
+    poiseuille --phi0 0.3 --phij 1.5
+expectRefused sbmZeroWidth "--width 0" fdmSuspensionBalance \
+    poiseuille --phi0 0.3 --width 0 --times 100
+expectRefused sbmZeroShields "Shields numbers must be > 0" \
+    fdmSuspensionBalance resuspension --sh 0 --volume 8
+expectRefused sbmNegativeVolume "--volume -1" fdmSuspensionBalance \
+    resuspension --sh 1 --volume -1
 
 [ "$failures" -eq 0 ]
