@@ -86,6 +86,7 @@ Description
 #include "freshOutputFile.H"
 #include "checkKeywords.H"
 #include "fpTrapsOff.H"
+#include "incompleteWrites.H"
 
 using namespace Foam;
 
@@ -101,6 +102,8 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
     #include "setRootCase.H"
+    // A time whose particleState a killed run did not finish is set aside
+    fdm::setAsideIncompleteWrites(args, wordList());
     #include "createTime.H"
     fdm::checkTimeControls(runTime);
 

@@ -174,8 +174,10 @@ void Foam::fdmParticleCloud::readState()
     }
 
     Info<< "    continuing from " << file << nl;
+    fdm::fpTrapsOff trapsOff;
     IFstream is(file);
     const dictionary state(is);
+    trapsOff.restore();
 
     const label n = state.get<label>("nParticles");
     if (n != size())

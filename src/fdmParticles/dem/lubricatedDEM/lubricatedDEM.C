@@ -529,6 +529,19 @@ void Foam::fdm::lubricatedDEM::readState(const dictionary& dict)
             << dict.name() << " holds " << n << " particles but the case"
             << " lists " << size() << exit(FatalIOError);
     }
+    const scalarList radius(dict.get<scalarList>("radius"));
+    forAll(radius, i)
+    {
+        if (mag(radius[i] - radius_[i]) > 1e-12*radius_[i])
+        {
+            FatalIOErrorInFunction(dict)
+                << dict.name() << ": particle " << i << " has radius "
+                << radius[i] << " but the particle list gives " << radius_[i]
+                << "; a restart continues the spheres that started the run"
+                << " (restore the list, or start again at time 0)"
+                << exit(FatalIOError);
+        }
+    }
     position_ = dict.get<List<point>>("position");
     velocity_ = dict.get<List<vector>>("velocity");
     spin_ = dict.get<List<vector>>("angularVelocity");

@@ -41,7 +41,11 @@ void setAside(const fileName& dir)
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
-void Foam::fdm::setAsideIncompleteWrites(const argList& args)
+void Foam::fdm::setAsideIncompleteWrites
+(
+    const argList& args,
+    const wordList& fields
+)
 {
     const fileName globalCase = args.rootPath()/args.globalCaseName();
     const fileName controlDict = globalCase/"system"/"controlDict";
@@ -72,9 +76,11 @@ void Foam::fdm::setAsideIncompleteWrites(const argList& args)
         const bool hasIt = mag(newest - mine) <= SMALL*max(1, mag(newest));
         const word t = hasIt ? times.last().name() : word::null;
 
-        bool whole = hasIt
-            && nonEmptyFile(args.path()/t/"U")
-            && nonEmptyFile(args.path()/t/"p");
+        bool whole = hasIt;
+        for (const word& field : fields)
+        {
+            whole = whole && nonEmptyFile(args.path()/t/field);
+        }
         if (particles && Pstream::master())
         {
             whole = whole && isFile(globalCase/t/"particleState");
