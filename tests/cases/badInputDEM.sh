@@ -29,8 +29,10 @@ expectFatal()
     local variant=$1 file=$2 edit=$3
     shift 3
     local dir="$work/$variant"
-    cp -r "$base" "$dir"
+    cp -r "${from:-$base}" "$dir"
     sed -i "$edit" "$dir/$file"
+    local before
+    before=$(cd "$dir" && ls -R . | grep -v "^log\.")
 
     if (cd "$dir" && lubricatedDEMFoam > log.lubricatedDEMFoam 2>&1)
     then
@@ -49,7 +51,7 @@ expectFatal()
             return
         fi
     done
-    if [ -e "$dir/postProcessing" ] || ls -d "$dir"/[1-9]* > /dev/null 2>&1
+    if [ "$(cd "$dir" && ls -R . | grep -v "^log\.")" != "$before" ]
     then
         echo "  FAIL $variant: wrote output before stopping"
         failures=$((failures + 1))
@@ -94,6 +96,51 @@ expectFatal zeroInterval $pp 's/interval    100;/interval 0;/' \
     particleProperties "interval" "steps between time-series rows"
 expectFatal trackMissing $pp 's/interval    100;/& track (5000);/' \
     particleProperties "particle 5000 does not exist"
+
+# Restarts: a run written to 0.002, then a newest time 0.003 holding only
+# the temporary file of a killed particleState write: set aside, the run
+# continues from 0.002
+restart="$work/restart"
+cp -r "$base" "$restart"
+sed -i -e 's/^endTime .*/endTime 0.002;/' -e 's/^writeInterval .*/writeInterval 0.001;/' \
+    "$restart/system/controlDict"
+(cd "$restart" && runLogged lubricatedDEMFoam) || exit 1
+mkdir "$restart/0.003"
+echo "(suspended (1 2" > "$restart/0.003/particleState.tmp"
+sed -i 's/^endTime .*/endTime 0.004;/' "$restart/system/controlDict"
+(cd "$restart" && mv log.lubricatedDEMFoam log.first \
+    && runLogged lubricatedDEMFoam) || exit 1
+if grep -q "Time 0.003 was not completely written" \
+        "$restart/log.lubricatedDEMFoam" \
+    && grep -q "Continuing from .*0.002/particleState" \
+        "$restart/log.lubricatedDEMFoam" \
+    && [ -d "$restart/0.003.incomplete" ] \
+    && [ -f "$restart/0.004/particleState" ]
+then
+    echo "  ok   halfWrittenTime: 0.003 set aside, continued from 0.002"
+else
+    echo "  FAIL halfWrittenTime: not set aside, or no restart from 0.002"
+    failures=$((failures + 1))
+fi
+rm -rf "$restart/0.004"
+# Asked to start at 0.002 whose particleState is gone: stops (rather than
+# restart from the list's positions)
+noState="$work/restartWithoutState"
+cp -r "$restart" "$noState"
+rm "$noState/0.002/particleState"
+sed -i -e 's/^startFrom .*/startFrom startTime;/' -e 's/^startTime .*/startTime 0.002;/' \
+    "$noState/system/controlDict"
+if ! (cd "$noState" && lubricatedDEMFoam > log.lubricatedDEMFoam 2>&1) \
+    && grep -q '0.002/particleState" is missing' \
+        "$noState/log.lubricatedDEMFoam"
+then
+    echo "  ok   restartWithoutState: stops, the state is missing"
+else
+    echo "  FAIL restartWithoutState: ran from the list's positions"
+    failures=$((failures + 1))
+fi
+from=$restart expectFatal restartChangedRadius $list "${row1}(suspended (\1) 1.01)/" \
+    particleState "particle 0 has radius 1 but the particle list gives 1.01"
 
 # Utilities: refused with the option and what is allowed, nothing written
 expectRefused()
