@@ -31,33 +31,8 @@ expectFatal()
     local dir="$work/$variant"
     cp -r "${from:-$base}" "$dir"
     sed -i "$edit" "$dir/$file"
-    local before
-    before=$(cd "$dir" && ls -R . | grep -v "^log\.")
-
-    if (cd "$dir" && lubricatedDEMFoam > log.lubricatedDEMFoam 2>&1)
-    then
-        echo "  FAIL $variant: solver accepted the bad input"
-        failures=$((failures + 1))
-        return
-    fi
-    local expected
-    for expected in "FOAM FATAL" "$@"
-    do
-        if ! grep -q -- "$expected" "$dir/log.lubricatedDEMFoam"
-        then
-            echo "  FAIL $variant: message does not name '$expected'"
-            tail -n 12 "$dir/log.lubricatedDEMFoam"
-            failures=$((failures + 1))
-            return
-        fi
-    done
-    if [ "$(cd "$dir" && ls -R . | grep -v "^log\.")" != "$before" ]
-    then
-        echo "  FAIL $variant: wrote output before stopping"
-        failures=$((failures + 1))
-        return
-    fi
-    echo "  ok   $variant: stops naming $*"
+    expectFatalRun "$dir" lubricatedDEMFoam "$variant" "$@" \
+        || failures=$((failures + 1))
 }
 
 # The first row of the list: (suspended (x y z) a)

@@ -27,10 +27,7 @@ check = checks.check
 
 a = particle_state(os.path.join(work, "straight"), "0.2")
 b = particle_state(os.path.join(work, "restarted"), "0.2")
-for key in ["position", "velocity", "angularVelocity", "force"]:
-    scale = np.abs(a[key]).max()
-    check("restarted vs straight %s (relative)" % key,
-          np.abs(a[key] - b[key]).max() / scale, 1e-12)
+checks.same_state("restarted vs straight", a, b)
 
 with h5py.File(os.path.join(work, "straight", "postProcessing",
                             "particles.h5"), "r") as f:

@@ -66,6 +66,11 @@ int main(int argc, char *argv[])
     #include "createFields.H"
     #include "initContinuityErrs.H"
 
+    // Function objects read (and their keywords checked) now rather than
+    // at the first runTime.loop(), after the initial solve; loop() keeps
+    // them (functionObjectList::read re-reads only changed dictionaries)
+    runTime.functionObjects().start();
+
     momentumBalance balance(mesh);
     clockTime flowClock;
     scalar flowSeconds = 0;
@@ -73,11 +78,6 @@ int main(int argc, char *argv[])
     scalar accelerationSeconds = 0;
     label nOuterTotal = 0;
     const label startTimeIndex = runTime.timeIndex();
-
-    // Function objects read (and their keywords checked) now rather than
-    // at the first runTime.loop(), after the initial solve; loop() keeps
-    // them (functionObjectList::read re-reads only changed dictionaries)
-    runTime.functionObjects().start();
 
     particles.prepare(lambda);
     if (!particles.empty() && !particles.solved())

@@ -28,5 +28,14 @@ class Checks:
             self.failures.append(name)
         return ok
 
+    def same_state(self, label, a, b, tol=1e-12,
+                   keys=("position", "velocity", "angularVelocity", "force")):
+        """Two particle states (particleCase.particle_state) agree key by
+        key, relative to the largest value of the first."""
+        for key in keys:
+            self.check("%s %s (relative)" % (label, key),
+                       np.abs(a[key] - b[key]).max() / np.abs(a[key]).max(),
+                       tol)
+
     def finish(self):
         sys.exit(1 if self.failures else 0)
