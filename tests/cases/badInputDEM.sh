@@ -1,6 +1,6 @@
 #!/bin/bash
 # Case test: bad input to lubricatedDEMFoam and to the utilities
-# (fdmPackParticles, fdmSuspensionBalance) stops with a message naming the
+# (fdmPackParticles, fdmSuspensionBalance, subGridCalibration) stops with a message naming the
 # file and the keyword or option, exit status non-zero, before anything is
 # written.  Each solver variant edits a valid small case (the
 # lubricatedShear tutorial in a 13^3 cell, 0.001 strain).
@@ -117,40 +117,52 @@ fi
 from=$restart expectFatal restartChangedRadius $list "${row1}(suspended (\1) 1.01)/" \
     particleState "particle 0 has radius 1 but the particle list gives 1.01"
 
-# Utilities: refused with the option and what is allowed, nothing written
+# Utilities: refused with the option and what is allowed, without a
+# traceback and without output ($out: where the variant asks it written)
 expectRefused()
 {
     local variant=$1 message=$2 utility=$3
     shift 3
-    local out="$work/$variant/out"
-    mkdir -p "$work/$variant"
-    if "$utility" "$@" -o "$out" > "$work/$variant/log" 2>&1
+    if "$utility" "$@" > "$work/$variant.log" 2>&1
     then
         echo "  FAIL $variant: $utility accepted $*"
         failures=$((failures + 1))
-    elif ! grep -q -- "$message" "$work/$variant/log" \
-        || grep -q Traceback "$work/$variant/log" || ls "$out"* > /dev/null 2>&1
+    elif ! grep -qF -- "$message" "$work/$variant.log" \
+        || grep -q Traceback "$work/$variant.log" || ls "$out"* > /dev/null 2>&1
     then
         echo "  FAIL $variant: no '$message', a traceback, or output written"
-        tail -n 5 "$work/$variant/log"
+        tail -n 5 "$work/$variant.log"
         failures=$((failures + 1))
     else
-        echo "  ok   $variant: $utility $* refused: $message"
+        echo "  ok   $variant: $utility refused: $message"
     fi
 }
+out=$work/utilities/out
+mkdir -p "$work/utilities"
 expectRefused packNegativeGap "--gap -1" fdmPackParticles \
-    --box 8 8 8 --phi 0.3 --gap -1
+    --box 8 8 8 --phi 0.3 --gap -1 -o "$out"
 expectRefused packUnreachablePhi "give 0.2681" fdmPackParticles \
-    --box 2.5 2.5 2.5 --phi 0.5
+    --box 2.5 2.5 2.5 --phi 0.5 -o "$out"
 expectRefused packZeroRadius "--radius 0" fdmPackParticles \
-    --box 8 8 8 --phi 0.3 --radius 0
+    --box 8 8 8 --phi 0.3 --radius 0 -o "$out"
 expectRefused sbmJammingAboveDensest "--phij 1.5" fdmSuspensionBalance \
-    poiseuille --phi0 0.3 --phij 1.5
+    poiseuille --phi0 0.3 --phij 1.5 -o "$out"
 expectRefused sbmZeroWidth "--width 0" fdmSuspensionBalance \
-    poiseuille --phi0 0.3 --width 0 --times 100
+    poiseuille --phi0 0.3 --width 0 --times 100 -o "$out"
 expectRefused sbmZeroShields "Shields numbers must be > 0" \
-    fdmSuspensionBalance resuspension --sh 0 --volume 8
+    fdmSuspensionBalance resuspension --sh 0 --volume 8 -o "$out"
 expectRefused sbmNegativeVolume "--volume -1" fdmSuspensionBalance \
-    resuspension --sh 1 --volume -1
+    resuspension --sh 1 --volume -1 -o "$out"
+expectRefused calibrationZeroRatio "--ratio 0: allowed > 0" \
+    subGridCalibration run --kind pair --ratio 0 --work "$out"
+expectRefused calibrationNegativeGap "--gaps 0.1,-1" \
+    subGridCalibration run --kind pair --gaps 0.1,-1 --work "$out"
+echo "a table" > "$work/utilities/table.dat"
+expectRefused calibrationTableExists "table.dat exists" \
+    subGridCalibration table --kind pair --measured m --theory t \
+    --out "$work/utilities/table.dat"
+grep -qx "a table" "$work/utilities/table.dat" \
+    || { echo "  FAIL calibrationTableExists: the table was changed"; \
+         failures=$((failures + 1)); }
 
 [ "$failures" -eq 0 ]
