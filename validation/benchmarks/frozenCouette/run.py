@@ -1,0 +1,275 @@
+#!/usr/bin/env python3
+"""Benchmark (issue 30, item 1, frozen configurations): cost against error
+of one time step of a sheared Couette suspension, for each solver setting,
+against a reference solve of the same step at tolerances far below any
+setting tested.
+
+A snapshot is a written time T of a Couette run (runPoint or the
+tutorial): its fields, particleState (positions, velocities and the
+Adams-Bashforth history) and constant/ and system/.  Every setting restarts
+from T for one step of the run's deltaT, so all settings move the particles
+to the same positions (explicit in the velocities of T) and solve the same
+configuration at T + deltaT from the same initial guess, as within a run.
+Per setting and snapshot:
+
+  cost   core-seconds of the step's solve (serial: flow, forcing, particle
+         solve and acceleration from the solver's Timing lines; start-up,
+         reading and output excluded) and its outer iterations;
+  error  of the particle translational and angular velocities against the
+         reference (rms and max over the particles, in gammaDot a1, a1 the
+         smallest radius) and of the particle stress (sum of the stresslets
+         over the cell volume, thesis eq 2.73): Sigma_xy, N1 = Sigma_xx -
+         Sigma_yy and N2 = Sigma_yy - Sigma_zz of the hydrodynamic part
+         (stresslet, sub-grid lubrication included) and of the contact part
+         (contactStresslet), each relative to the reference's |Sigma_xy|.
+
+Settings (NAME, or NAME@LAMBDATOL for another lambda residual per step):
+
+  default    the case's own settings (the tutorial: Anderson, lambda
+             residual 1e-3 per step)
+  thesis     the thesis scheme: no acceleration, the same lambda residual
+  thesis10   the thesis scheme with its fixed 10 outer loops per step
+  reference  Anderson to lambda residual 1e-9, linear solvers to 1e-12
+             absolute (relTol 0), at most 3000 outer iterations
+
+    run.py --snapshot CASE:T[,T...] [--snapshot ...]
+           [--settings default,thesis,thesis10,default@1e-4]
+
+Writes report.md here (cases in build/benchmarks/frozenCouette).
+"""
+
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PROJECT = os.environ["FDM_PROJECT_DIR"]
+sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
+from fdmPost.particleCase import read_list  # noqa: E402
+
+STATE_KEYS = (("radius", 1), ("velocity", 3), ("angularVelocity", 3),
+              ("stresslet", 6), ("contactStresslet", 6))
+
+
+def in_case(case):
+    """Environment for a command run in case (OpenFOAM warns when PWD is
+    not the working directory)."""
+    return dict(os.environ, PWD=os.path.abspath(case))
+
+
+def sh(cmd, case, log):
+    with open(os.path.join(case, log), "w") as f:
+        rc = subprocess.call(cmd, cwd=case, stdout=f,
+                             stderr=subprocess.STDOUT, env=in_case(case))
+    if rc != 0:
+        raise RuntimeError("%s failed in %s (see %s)" % (cmd, case, log))
+
+
+def foam_set(case, entry, value, path):
+    sh(["foamDictionary", "-entry", entry, "-set", str(value), path], case,
+       "log.foamDictionary")
+
+
+def foam_get(case, entry, path):
+    out = subprocess.run(["foamDictionary", "-entry", entry, "-value", path],
+                         cwd=case, stdout=subprocess.PIPE, check=True,
+                         env=in_case(case))
+    return out.stdout.decode().strip()
+
+
+def snapshot_case(source, time, work):
+    """constant/, system/ and the (reconstructed) time T of a run."""
+    name = "%s_%s" % (os.path.basename(os.path.normpath(source)), time)
+    case = os.path.join(work, "snapshots", name)
+    if os.path.isfile(os.path.join(case, time, "U")):
+        return case
+    if not os.path.isfile(os.path.join(source, time, "U")):
+        sh(["reconstructPar", "-time", time], source, "log.reconstructPar")
+    shutil.rmtree(case, ignore_errors=True)
+    os.makedirs(case)
+    for d in ("constant", "system", time):
+        shutil.copytree(os.path.join(source, d), os.path.join(case, d))
+    return case
+
+
+def setting_case(snapshot, time, setting, work):
+    name, _, tol = setting.partition("@")
+    case = os.path.join(work, "%s_%s" % (os.path.basename(snapshot),
+                                         setting.replace("@", "_tol")))
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(snapshot, case)
+    dt = float(foam_get(case, "deltaT", "system/controlDict"))
+    foam_set(case, "startFrom", "latestTime", "system/controlDict")
+    foam_set(case, "endTime", "%.12g" % (float(time) + dt),
+             "system/controlDict")
+    foam_set(case, "writeControl", "timeStep", "system/controlDict")
+    foam_set(case, "writeInterval", 1, "system/controlDict")
+    foam_set(case, "functions", "{}", "system/controlDict")
+    fv, pp = "system/fvSolution", "constant/particleProperties"
+    if name in ("thesis", "thesis10"):
+        foam_set(case, "SIMPLEC.acceleration", "none", fv)
+        foam_set(case, "SIMPLEC.nOuterCorrectors",
+                 10 if name == "thesis10" else 3000, fv)
+    if name == "thesis10":
+        foam_set(case, "coupling.lambdaTolerance", 0, pp)
+    if name == "reference":
+        foam_set(case, "SIMPLEC.nOuterCorrectors", 3000, fv)
+        foam_set(case, "coupling.lambdaTolerance", 1e-9, pp)
+        foam_set(case, "coupling.particleSolveTolerance", 1e-14, pp)
+        for field in ("p", "U"):
+            foam_set(case, "solvers.%s.tolerance" % field, 1e-12, fv)
+            foam_set(case, "solvers.%s.relTol" % field, 0, fv)
+    elif name not in ("default", "thesis", "thesis10"):
+        raise SystemExit("unknown setting %s" % setting)
+    if tol:
+        foam_set(case, "coupling.lambdaTolerance", tol, pp)
+    return case, "%.12g" % (float(time) + dt)
+
+
+TIMING = re.compile(
+    r"Timing \[s\] after (\d+) outer iterations in (\d+) step\(s\): total "
+    r"\S+,.*\n\s+flow (\S+), indicators (\S+), lambda/u integrals (\S+), "
+    r"particle solve (\S+), corrections (\S+), acceleration (\S+),")
+
+
+def read_state(case, time):
+    text = open(os.path.join(case, time, "particleState")).read()
+    state = {}
+    for key, width in STATE_KEYS:
+        try:
+            state[key] = np.asarray(read_list(text, key, width))
+        except KeyError:
+            pass
+    return state
+
+
+def solve(case, end):
+    sh(["fdmSuspensionFoam"], case, "log.fdmSuspensionFoam")
+    text = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
+    timing = TIMING.findall(text)
+    if not timing:
+        raise RuntimeError("no Timing line in %s" % case)
+    # The step's solve work (flow, forcing, particle solve, acceleration),
+    # without start-up and output; serial, so seconds are core-seconds
+    outer = int(timing[-1][0])
+    seconds = sum(float(v) for v in timing[-1][2:])
+    residual = re.findall(r"lambda residual (\S+),", text)
+    return {"coreSeconds": seconds, "outer": outer,
+            "residual": float(residual[-1]) if residual else float("nan"),
+            "state": read_state(case, end)}
+
+
+def stress_parts(state, volume):
+    """Sigma_xy, N1, N2 of the hydrodynamic and contact stresslet sums."""
+    out = {}
+    for part, key in (("hydro", "stresslet"), ("contact", "contactStresslet")):
+        if key not in state:
+            continue
+        # symmTensor rows: xx xy xz yy yz zz
+        s = np.asarray(state[key]).reshape(-1, 6).sum(axis=0) / volume
+        out[part] = np.array([s[1], s[0] - s[3], s[3] - s[5]])
+    return out
+
+
+def errors(run, ref, shear_rate, volume):
+    a1 = ref["state"]["radius"].min()
+    scale_u, scale_w = shear_rate * a1, shear_rate
+    row = {}
+    for key, scale in (("velocity", scale_u), ("angularVelocity", scale_w)):
+        d = np.linalg.norm(np.asarray(run["state"][key]).reshape(-1, 3)
+                           - np.asarray(ref["state"][key]).reshape(-1, 3),
+                           axis=1) / scale
+        row[key] = (np.sqrt(np.mean(d ** 2)), d.max())
+    s_run = stress_parts(run["state"], volume)
+    s_ref = stress_parts(ref["state"], volume)
+    sxy = abs(s_ref["hydro"][0] + s_ref.get("contact", np.zeros(3))[0])
+    for part in s_ref:
+        row[part] = np.abs(s_run[part] - s_ref[part]) / sxy
+    return row
+
+
+def cell_volume_and_rate(case):
+    """Volume from the blockMeshDict box, shear rate from the wall speeds."""
+    text = open(os.path.join(case, "system", "blockMeshDict")).read()
+    box = [float(re.search(r"^%s\s+(\S+);" % k, text, re.M).group(1))
+           for k in ("Lx", "Ly", "Lz")]
+    top = foam_get(case, "boundaryField.topWall.value", "0/U"
+                   if os.path.isfile(os.path.join(case, "0", "U")) else
+                   "%s/U" % sorted(d for d in os.listdir(case)
+                                   if re.fullmatch(r"[0-9.e+-]+", d))[0])
+    number = r"[-+0-9.eE]+"
+    u_top = float(re.search(r"\(\s*(%s)\s+%s\s+%s\s*\)"
+                            % (number, number, number), top).group(1))
+    return box[0] * box[1] * box[2], 2 * abs(u_top) / box[1]
+
+
+def main():
+    ap = argparse.ArgumentParser(
+        description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--snapshot", action="append", required=True,
+                    help="CASE:T[,T...] (written times of a Couette run)")
+    ap.add_argument("--settings", default="default,thesis,thesis10")
+    args = ap.parse_args()
+    work = os.path.join(PROJECT, "build", "benchmarks", "frozenCouette")
+    os.makedirs(work, exist_ok=True)
+
+    rows = []
+    for spec in args.snapshot:
+        source, _, times = spec.rpartition(":")
+        for time in times.split(","):
+            snap = snapshot_case(os.path.abspath(source), time, work)
+            volume, rate = cell_volume_and_rate(snap)
+            case, end = setting_case(snap, time, "reference", work)
+            ref = solve(case, end)
+            print("%s: reference %d outer iterations, %.1f core-s, lambda "
+                  "residual %.1e" % (os.path.basename(snap), ref["outer"],
+                                     ref["coreSeconds"], ref["residual"]),
+                  flush=True)
+            for setting in args.settings.split(","):
+                case, end = setting_case(snap, time, setting, work)
+                run = solve(case, end)
+                row = errors(run, ref, rate, volume)
+                row.update(snapshot=os.path.basename(snap), setting=setting,
+                           coreSeconds=run["coreSeconds"], outer=run["outer"],
+                           residual=run["residual"])
+                rows.append(row)
+                print("  %-16s %6.1f core-s %4d outer, |dU| rms %.1e max "
+                      "%.1e" % (setting, run["coreSeconds"], run["outer"],
+                                *row["velocity"]), flush=True)
+    write_report(rows)
+
+
+def write_report(rows):
+    lines = [
+        "# Frozen-configuration benchmark: one step of a sheared Couette "
+        "suspension",
+        "",
+        "Errors against the reference solve of the same step (see run.py): "
+        "velocities in gammaDot a1, angular velocities in gammaDot, stress "
+        "parts relative to the reference |Sigma_xy|.",
+        "",
+        "| snapshot | setting | core-s | outer | lambda residual | U rms | "
+        "U max | Omega rms | Omega max | hydro Sxy, N1, N2 | "
+        "contact Sxy, N1, N2 |",
+        "|---|---|---|---|---|---|---|---|---|---|---|",
+    ]
+    for r in rows:
+        parts = ["%.1e, %.1e, %.1e" % tuple(r[p]) if p in r else "-"
+                 for p in ("hydro", "contact")]
+        lines.append("| %s | %s | %.2f | %d | %.1e | %.1e | %.1e | %.1e | "
+                     "%.1e | %s | %s |"
+                     % (r["snapshot"], r["setting"], r["coreSeconds"],
+                        r["outer"], r["residual"], *r["velocity"],
+                        *r["angularVelocity"], *parts))
+    with open(os.path.join(HERE, "report.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("wrote", os.path.join(HERE, "report.md"))
+
+
+if __name__ == "__main__":
+    main()
