@@ -90,6 +90,7 @@ Description
 
 using namespace Foam;
 
+#include "demState.H"
 #include "demSetup.H"
 #include "demOutput.H"
 
