@@ -87,6 +87,7 @@ Description
 #include "checkKeywords.H"
 #include "fpTrapsOff.H"
 #include "incompleteWrites.H"
+#include "isFinite.H"
 
 using namespace Foam;
 

@@ -11,27 +11,7 @@ Description
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "IOobject.H"
-
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
-
-namespace
-{
-
-template<class Type>
-bool finite(const Type& x)
-{
-    for (Foam::direction d = 0; d < Foam::pTraits<Type>::nComponents; ++d)
-    {
-        if (!std::isfinite(Foam::component(x, d)))
-        {
-            return false;
-        }
-    }
-    return true;
-}
-
-} // namespace
-
+#include "isFinite.H"
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -51,16 +31,16 @@ void Foam::fdmParticleCloud::checkFinite() const
     };
     forAll(position_, p)
     {
-        if (!finite(position_[p])) stop("position", p);
-        if (!finite(U_[p])) stop("velocity", p);
-        if (!finite(Omega_[p])) stop("angular velocity", p);
-        if (!finite(force_[p])) stop("force", p);
-        if (!finite(torque_[p])) stop("torque", p);
-        if (!finite(stresslet_[p])) stop("stresslet", p);
-        if (!finite(dipoleTrace_[p])) stop("dipole trace", p);
-        if (!finite(contactForce_[p])) stop("contact force", p);
-        if (!finite(contactTorque_[p])) stop("contact torque", p);
-        if (!finite(contactStresslet_[p])) stop("contact stresslet", p);
+        if (!fdm::isFinite(position_[p])) stop("position", p);
+        if (!fdm::isFinite(U_[p])) stop("velocity", p);
+        if (!fdm::isFinite(Omega_[p])) stop("angular velocity", p);
+        if (!fdm::isFinite(force_[p])) stop("force", p);
+        if (!fdm::isFinite(torque_[p])) stop("torque", p);
+        if (!fdm::isFinite(stresslet_[p])) stop("stresslet", p);
+        if (!fdm::isFinite(dipoleTrace_[p])) stop("dipole trace", p);
+        if (!fdm::isFinite(contactForce_[p])) stop("contact force", p);
+        if (!fdm::isFinite(contactTorque_[p])) stop("contact torque", p);
+        if (!fdm::isFinite(contactStresslet_[p])) stop("contact stresslet", p);
     }
 }
 

@@ -9,8 +9,8 @@
 #include "OSspecific.H"
 #include "pairSearch.H"
 #include "fpTrapsOff.H"
+#include "isFinite.H"
 #include "IOstreams.H"
-#include <cmath>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -120,7 +120,7 @@ Foam::fdm::particleList Foam::fdm::readParticleList
         is >> g >> x >> a;
         expectPunctuation(is, token::END_LIST, "at the end of a row");
 
-        if (!std::isfinite(a) || !std::isfinite(cmptSum(cmptMag(x))))
+        if (!isFinite(a) || !isFinite(x))
         {
             FatalIOErrorInFunction(is)
                 << "Particle " << list.group.size() << " in " << is.name()
