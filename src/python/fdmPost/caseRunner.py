@@ -5,9 +5,12 @@ cell_offsets   positions inside a mesh cell to average over
 fill_template  copy a template case and replace its @TOKENS@
 run_case       blockMesh + fdmSuspensionFoam; the last particles.h5 record
 read_last_record   that record of a case already run
+run_logged, foam_set, foam_get   a command, a dictionary entry, in a case
+timing_lines   the cumulative Timing lines of an fdmSuspensionFoam log
 """
 
 import os
+import re
 import shutil
 import subprocess
 
@@ -83,3 +86,50 @@ def symm(s):
     """3 x 3 array of a symmTensor given as xx xy xz yy yz zz."""
     return np.array([[s[0], s[1], s[2]], [s[1], s[3], s[4]],
                      [s[2], s[4], s[5]]])
+
+
+def in_case(case):
+    """Environment for a command run in case (OpenFOAM warns on stdout when
+    PWD is not the working directory)."""
+    return dict(os.environ, PWD=os.path.abspath(case))
+
+
+def run_logged(cmd, case, log):
+    """Run cmd (a list) in case, its output in case/log; RuntimeError
+    naming the log on failure."""
+    with open(os.path.join(case, log), "w") as f:
+        rc = subprocess.call(cmd, cwd=case, stdout=f,
+                             stderr=subprocess.STDOUT, env=in_case(case))
+    if rc != 0:
+        raise RuntimeError("%s failed in %s (see %s)" % (cmd, case, log))
+
+
+def foam_set(case, entry, value, path):
+    """foamDictionary -entry entry -set value on case/path."""
+    run_logged(["foamDictionary", "-entry", entry, "-set", str(value), path],
+               case, "log.foamDictionary")
+
+
+def foam_get(case, entry, path):
+    """The value of a dictionary entry of case/path, as text."""
+    out = subprocess.run(["foamDictionary", "-entry", entry, "-value", path],
+                         cwd=case, stdout=subprocess.PIPE, check=True,
+                         env=in_case(case))
+    return out.stdout.decode().strip()
+
+
+# The columns of the solver's "Timing [s]" report (reportTimings.H), all
+# cumulative since the start of the run
+TIMING_COLUMNS = ("outer", "steps", "total", "flow", "indicators",
+                  "integrals", "particleSolve", "corrections",
+                  "acceleration", "output")
+TIMING = re.compile(
+    r"Timing \[s\] after (\d+) outer iterations in (\d+) step\(s\): total "
+    r"(\S+),.*\n\s+flow (\S+), indicators (\S+), lambda/u integrals (\S+), "
+    r"particle solve (\S+), corrections (\S+), acceleration (\S+), output "
+    r"(\S+),")
+
+
+def timing_lines(text):
+    """Each Timing report of a log as a list of floats, TIMING_COLUMNS."""
+    return [[float(v) for v in m.groups()] for m in TIMING.finditer(text)]

@@ -40,7 +40,6 @@ import argparse
 import os
 import re
 import shutil
-import subprocess
 import sys
 import time
 
@@ -48,19 +47,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.environ["FDM_PROJECT_DIR"]
 TUTORIAL = os.path.join(PROJECT, "tutorials", "couette")
 L, CELLS, PHI0, DT, TOL = 20, 100, 0.42, 1e-3, 1e-4
-
-
-def sh(cmd, case, log):
-    with open(os.path.join(case, log), "w") as f:
-        rc = subprocess.call(cmd, cwd=case, stdout=f, stderr=subprocess.STDOUT,
-                             shell=isinstance(cmd, str))
-    if rc != 0:
-        raise RuntimeError("%s failed in %s (see %s)" % (cmd, case, log))
-
-
-def foam_set(case, entry, value, path):
-    sh(["foamDictionary", "-entry", entry, "-set", str(value), path], case,
-       "log.foamDictionary")
+sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
+from fdmPost.caseRunner import foam_set, run_logged, timing_lines  # noqa
 
 
 def base_case(work):
@@ -90,11 +78,11 @@ def base_case(work):
     foam_set(case, "startFrom", "latestTime", "system/controlDict")
     for key in ("lambdaTolerance", "lambdaToleranceFirstStep"):
         foam_set(case, "coupling." + key, TOL, "constant/particleProperties")
-    sh(["fdmPackParticles", "--box", str(L), str(L), str(L), "--walls", "y",
-        "--phi", str(PHI0), "--seed", "1", "-o", "constant/particleList"],
-       case, "log.fdmPackParticles")
-    sh(["blockMesh"], case, "log.blockMesh")
-    sh(["fdmSuspensionFoam"], case, "log.fdmSuspensionFoam")
+    run_logged(["fdmPackParticles", "--box", str(L), str(L), str(L),
+                "--walls", "y", "--phi", str(PHI0), "--seed", "1", "-o",
+                "constant/particleList"], case, "log.fdmPackParticles")
+    run_logged(["blockMesh"], case, "log.blockMesh")
+    run_logged(["fdmSuspensionFoam"], case, "log.fdmSuspensionFoam")
     return case
 
 
@@ -115,9 +103,8 @@ def policy_case(work, base, name, dt, steps):
     # uses GAMG since this benchmark measured it faster)
     solver = ("GAMG; smoother GaussSeidel" if name == "andersonGAMG"
               else "PCG; preconditioner DIC")
-    sh(["foamDictionary", "-entry", "solvers.p", "-set",
-        "{ solver %s; tolerance 1e-7; relTol 0.05; }" % solver, fv], case,
-       "log.foamDictionary")
+    foam_set(case, "solvers.p",
+             "{ solver %s; tolerance 1e-7; relTol 0.05; }" % solver, fv)
     if name == "thesis10":
         foam_set(case, "SIMPLEC.nOuterCorrectors", 10, fv)
         foam_set(case, "coupling.lambdaTolerance", 0,
@@ -137,30 +124,23 @@ def run_timed(case, nprocs):
         foam_set(case, "numberOfSubdomains", nprocs, "system/decomposeParDict")
         foam_set(case, "coeffs.n", "(%d 1 1)" % nprocs,
                  "system/decomposeParDict")
-        sh(["decomposePar", "-latestTime"], case, "log.decomposePar")
+        run_logged(["decomposePar", "-latestTime"], case, "log.decomposePar")
         cmd = ["mpirun", "-np", str(nprocs), "--oversubscribe",
                "fdmSuspensionFoam", "-parallel"]
     else:
         cmd = ["fdmSuspensionFoam"]
     start = time.time()
-    sh([sys.executable, "-c", PEAK, "peakMemory"] + cmd, case,
-       "log.fdmSuspensionFoam")
+    run_logged([sys.executable, "-c", PEAK, "peakMemory"] + cmd, case,
+               "log.fdmSuspensionFoam")
     wall = time.time() - start
     return wall, int(open(os.path.join(case, "peakMemory")).read())
-
-
-TIMING = re.compile(
-    r"Timing \[s\] after (\d+) outer iterations in (\d+) step\(s\): total "
-    r"(\S+),.*\n\s+flow (\S+), indicators (\S+), lambda/u integrals (\S+), "
-    r"particle solve (\S+), corrections (\S+), acceleration (\S+), output "
-    r"(\S+),")
 
 
 def parse(case):
     """Per-step costs of steps 2.. from the cumulative Timing lines, and
     the lambda residual at the end of every step."""
     text = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
-    t = [[float(v) for v in m.groups()] for m in TIMING.finditer(text)]
+    t = timing_lines(text)
     if len(t) < 2:
         raise RuntimeError("fewer than two Timing lines in %s" % case)
     first, last = t[0], t[-1]

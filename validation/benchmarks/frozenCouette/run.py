@@ -42,7 +42,6 @@ import argparse
 import os
 import re
 import shutil
-import subprocess
 import sys
 from datetime import date
 
@@ -51,36 +50,12 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.environ["FDM_PROJECT_DIR"]
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
+from fdmPost.caseRunner import (foam_get, foam_set, run_logged,  # noqa
+                                timing_lines)
 from fdmPost.particleCase import read_list  # noqa: E402
 
 STATE_KEYS = (("radius", 1), ("velocity", 3), ("angularVelocity", 3),
               ("stresslet", 6), ("contactStresslet", 6))
-
-
-def in_case(case):
-    """Environment for a command run in case (OpenFOAM warns when PWD is
-    not the working directory)."""
-    return dict(os.environ, PWD=os.path.abspath(case))
-
-
-def sh(cmd, case, log):
-    with open(os.path.join(case, log), "w") as f:
-        rc = subprocess.call(cmd, cwd=case, stdout=f,
-                             stderr=subprocess.STDOUT, env=in_case(case))
-    if rc != 0:
-        raise RuntimeError("%s failed in %s (see %s)" % (cmd, case, log))
-
-
-def foam_set(case, entry, value, path):
-    sh(["foamDictionary", "-entry", entry, "-set", str(value), path], case,
-       "log.foamDictionary")
-
-
-def foam_get(case, entry, path):
-    out = subprocess.run(["foamDictionary", "-entry", entry, "-value", path],
-                         cwd=case, stdout=subprocess.PIPE, check=True,
-                         env=in_case(case))
-    return out.stdout.decode().strip()
 
 
 def snapshot_case(source, time, work):
@@ -90,7 +65,7 @@ def snapshot_case(source, time, work):
     if os.path.isfile(os.path.join(case, time, "U")):
         return case
     if not os.path.isfile(os.path.join(source, time, "U")):
-        sh(["reconstructPar", "-time", time], source, "log.reconstructPar")
+        run_logged(["reconstructPar", "-time", time], source, "log.reconstructPar")
     shutil.rmtree(case, ignore_errors=True)
     os.makedirs(case)
     for d in ("constant", "system", time):
@@ -137,12 +112,6 @@ def setting_case(snapshot, time, setting, work):
     return case, "%.12g" % (float(time) + dt)
 
 
-TIMING = re.compile(
-    r"Timing \[s\] after (\d+) outer iterations in (\d+) step\(s\): total "
-    r"\S+,.*\n\s+flow (\S+), indicators (\S+), lambda/u integrals (\S+), "
-    r"particle solve (\S+), corrections (\S+), acceleration (\S+),")
-
-
 def read_state(case, time):
     text = open(os.path.join(case, time, "particleState")).read()
     state = {}
@@ -157,20 +126,20 @@ def read_state(case, time):
 def finished(case):
     """The step was solved (a rerun of the benchmark reuses it)."""
     log = os.path.join(case, "log.fdmSuspensionFoam")
-    return os.path.isfile(log) and bool(TIMING.search(open(log).read()))
+    return os.path.isfile(log) and bool(timing_lines(open(log).read()))
 
 
 def solve(case, end):
     if not finished(case):
-        sh(["fdmSuspensionFoam"], case, "log.fdmSuspensionFoam")
+        run_logged(["fdmSuspensionFoam"], case, "log.fdmSuspensionFoam")
     text = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
-    timing = TIMING.findall(text)
+    timing = timing_lines(text)
     if not timing:
         raise RuntimeError("no Timing line in %s" % case)
     # The step's solve work (flow, forcing, particle solve, acceleration),
     # without start-up and output; serial, so seconds are core-seconds
     outer = int(timing[-1][0])
-    seconds = sum(float(v) for v in timing[-1][2:])
+    seconds = sum(timing[-1][3:9])
     residual = re.findall(r"lambda residual (\S+),", text)
     return {"coreSeconds": seconds, "outer": outer,
             "residual": float(residual[-1]) if residual else float("nan"),

@@ -1,0 +1,36 @@
+"""timing_lines reads the solver's Timing report (reportTimings.H) as the
+benchmarks use it; the sample is a line pair fdmSuspensionFoam wrote."""
+
+import unittest
+
+from fdmPost.caseRunner import TIMING_COLUMNS, timing_lines
+
+LOG = """Time = 2.004
+Timing [s] after 12 outer iterations in 1 step(s): total 1, per step 1, \
+per outer iteration 0.0833333333333
+    flow 0.669359745, indicators 0.002540905, lambda/u integrals \
+0.003383779, particle solve 0.00961074, corrections 0.004655032, \
+acceleration 0.075277111, output 0.128903588, other (set-up, state \
+copies) 0.1062691
+End
+"""
+
+
+class TimingLinesTest(unittest.TestCase):
+    def test_columns_of_a_report(self):
+        rows = timing_lines(LOG + LOG.replace("12 outer", "30 outer"))
+        self.assertEqual(len(rows), 2)
+        row = dict(zip(TIMING_COLUMNS, rows[0]))
+        self.assertEqual(row["outer"], 12)
+        self.assertEqual(row["steps"], 1)
+        self.assertEqual(row["flow"], 0.669359745)
+        self.assertEqual(row["acceleration"], 0.075277111)
+        self.assertEqual(row["output"], 0.128903588)
+        self.assertEqual(rows[1][0], 30)
+
+    def test_no_report(self):
+        self.assertEqual(timing_lines("Time = 0\nEnd\n"), [])
+
+
+if __name__ == "__main__":
+    unittest.main()
