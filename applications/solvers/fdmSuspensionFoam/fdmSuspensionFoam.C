@@ -44,6 +44,7 @@ Usage
 #include "checkKeywords.H"
 #include "checkTimeControls.H"
 #include "incompleteWrites.H"
+#include "layerMeanCorrection.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -58,6 +58,31 @@ STATE_KEYS = (("radius", 1), ("velocity", 3), ("angularVelocity", 3),
               ("stresslet", 6), ("contactStresslet", 6))
 
 
+FILES = {"fv": "system/fvSolution", "pp": "constant/particleProperties"}
+GAMG_U = (("solvers.U", "{solver GAMG; smoother GaussSeidel; "
+           "tolerance 1e-7; relTol 0.1;}", "fv"),)
+# Each setting: the dictionary entries it changes from the case's own
+SETTINGS = {
+    "default": (),
+    "thesis": (("SIMPLEC.acceleration", "none", "fv"),
+               ("SIMPLEC.nOuterCorrectors", 3000, "fv")),
+    "thesis10": (("SIMPLEC.acceleration", "none", "fv"),
+                 ("SIMPLEC.nOuterCorrectors", 10, "fv"),
+                 ("coupling.lambdaTolerance", 0, "pp")),
+    "gamgU": GAMG_U,
+    "layerMean": (("SIMPLEC.layerMeanCorrection", "on", "fv"),),
+    "relax0.97": (("relaxationFactors.equations.U", 0.97, "fv"),),
+    "relax1": (("relaxationFactors.equations.U", 1, "fv"),),
+    "reference": (("SIMPLEC.nOuterCorrectors", 3000, "fv"),
+                  ("coupling.lambdaTolerance", 1e-9, "pp"),
+                  ("coupling.particleSolveTolerance", 1e-14, "pp"),
+                  ("solvers.p.tolerance", 1e-12, "fv"),
+                  ("solvers.p.relTol", 0, "fv"),
+                  ("solvers.U.tolerance", 1e-12, "fv"),
+                  ("solvers.U.relTol", 0, "fv")),
+}
+
+
 def snapshot_case(source, time, work):
     """constant/, system/ and the (reconstructed) time T of a run."""
     name = "%s_%s" % (os.path.basename(os.path.normpath(source)), time)
@@ -73,43 +98,45 @@ def snapshot_case(source, time, work):
     return case
 
 
-def setting_case(snapshot, time, setting, work):
+def setting_case(snapshot, time, setting, work, steps=1):
+    """A copy of the snapshot with the setting's edits that runs `steps`
+    steps from T; returns the case and its end time."""
     name, _, tol = setting.partition("@")
-    case = os.path.join(work, "%s_%s" % (os.path.basename(snapshot),
-                                         setting.replace("@", "_tol")))
-    done = [d for d in os.listdir(case) if d != time and
-            os.path.isfile(os.path.join(case, d, "particleState"))] \
-        if os.path.isdir(case) else []
-    if done and finished(case):
-        return case, done[0]
+    if name not in SETTINGS:
+        raise SystemExit("unknown setting %s (known: %s)"
+                         % (setting, ", ".join(sorted(SETTINGS))))
+    case = os.path.join(work, "%s_%s%s" % (
+        os.path.basename(snapshot), setting.replace("@", "_tol"),
+        "_%dsteps" % steps if steps > 1 else ""))
+    dt = float(foam_get(snapshot, "deltaT", "system/controlDict"))
+    end = "%.12g" % (float(time) + steps * dt)
+    if finished(case) and os.path.isfile(os.path.join(case, end,
+                                                      "particleState")):
+        return case, end
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(snapshot, case)
-    dt = float(foam_get(case, "deltaT", "system/controlDict"))
     foam_set(case, "startFrom", "latestTime", "system/controlDict")
-    foam_set(case, "endTime", "%.12g" % (float(time) + dt),
-             "system/controlDict")
+    foam_set(case, "endTime", end, "system/controlDict")
     foam_set(case, "writeControl", "timeStep", "system/controlDict")
     foam_set(case, "writeInterval", 1, "system/controlDict")
     foam_set(case, "functions", "{}", "system/controlDict")
-    fv, pp = "system/fvSolution", "constant/particleProperties"
-    if name in ("thesis", "thesis10"):
-        foam_set(case, "SIMPLEC.acceleration", "none", fv)
-        foam_set(case, "SIMPLEC.nOuterCorrectors",
-                 10 if name == "thesis10" else 3000, fv)
-    if name == "thesis10":
-        foam_set(case, "coupling.lambdaTolerance", 0, pp)
-    if name == "reference":
-        foam_set(case, "SIMPLEC.nOuterCorrectors", 3000, fv)
-        foam_set(case, "coupling.lambdaTolerance", 1e-9, pp)
-        foam_set(case, "coupling.particleSolveTolerance", 1e-14, pp)
-        for field in ("p", "U"):
-            foam_set(case, "solvers.%s.tolerance" % field, 1e-12, fv)
-            foam_set(case, "solvers.%s.relTol" % field, 0, fv)
-    elif name not in ("default", "thesis", "thesis10"):
-        raise SystemExit("unknown setting %s" % setting)
+    for entry, value, where in SETTINGS[name]:
+        foam_set(case, entry, value, FILES[where])
     if tol:
-        foam_set(case, "coupling.lambdaTolerance", tol, pp)
-    return case, "%.12g" % (float(time) + dt)
+        foam_set(case, "coupling.lambdaTolerance", tol, FILES["pp"])
+    return case, end
+
+
+def reference_from(case, time, work):
+    """The reference solve of the step after `time` of a setting's case
+    (the snapshot itself when time is its own start)."""
+    source = os.path.join(work, "start_%s_%s" % (os.path.basename(case),
+                                                 time))
+    if not os.path.isdir(source):
+        os.makedirs(source)
+        for d in ("constant", "system", time):
+            shutil.copytree(os.path.join(case, d), os.path.join(source, d))
+    return setting_case(source, time, "reference", work)
 
 
 def read_state(case, time):
@@ -136,10 +163,13 @@ def solve(case, end):
     timing = timing_lines(text)
     if not timing:
         raise RuntimeError("no Timing line in %s" % case)
-    # The step's solve work (flow, forcing, particle solve, acceleration),
-    # without start-up and output; serial, so seconds are core-seconds
-    outer = int(timing[-1][0])
-    seconds = sum(timing[-1][3:9])
+    # The last step's solve work (flow, forcing, particle solve,
+    # acceleration), without start-up and output; serial, so seconds are
+    # core-seconds
+    last = np.array(timing[-1]) - (np.array(timing[-2]) if len(timing) > 1
+                                   else 0)
+    outer = int(last[0])
+    seconds = sum(last[3:9])
     residual = re.findall(r"lambda residual (\S+),", text)
     return {"coreSeconds": seconds, "outer": outer,
             "residual": float(residual[-1]) if residual else float("nan"),
@@ -203,6 +233,10 @@ def main():
     ap.add_argument("--snapshot", action="append", required=True,
                     help="CASE:T[,T...] (written times of a Couette run)")
     ap.add_argument("--settings", default="default,thesis,thesis10")
+    ap.add_argument("--steps", type=int, default=1,
+                    help="steps per setting from the snapshot; the last is "
+                    "measured against a reference solve of the same step "
+                    "(more than one lets a setting's own state settle)")
     args = ap.parse_args()
     work = os.path.join(PROJECT, "build", "benchmarks", "frozenCouette")
     os.makedirs(work, exist_ok=True)
@@ -213,19 +247,30 @@ def main():
         for time in times.split(","):
             snap = snapshot_case(os.path.abspath(source), time, work)
             volume, rate = cell_volume_and_rate(snap)
-            case, end = setting_case(snap, time, "reference", work)
-            ref = solve(case, end)
-            print("%s: reference %d outer iterations, %.1f core-s, lambda "
-                  "residual %.1e" % (os.path.basename(snap), ref["outer"],
-                                     ref["coreSeconds"], ref["residual"]),
-                  flush=True)
+            first = None
+            if args.steps == 1:
+                case, end = setting_case(snap, time, "reference", work)
+                first = solve(case, end)
+                print("%s: reference %d outer iterations, %.1f core-s, "
+                      "lambda residual %.1e" % (
+                          os.path.basename(snap), first["outer"],
+                          first["coreSeconds"], first["residual"]),
+                      flush=True)
             for setting in args.settings.split(","):
-                case, end = setting_case(snap, time, setting, work)
+                case, end = setting_case(snap, time, setting, work,
+                                         args.steps)
                 run = solve(case, end)
+                ref = first
+                if ref is None:
+                    # The measured step is the last: its reference starts
+                    # from the setting's own state one step before
+                    dt = float(foam_get(snap, "deltaT", "system/controlDict"))
+                    before = "%.12g" % (float(end) - dt)
+                    ref = solve(*reference_from(case, before, work))
                 row = errors(run, ref, rate, volume)
                 row.update(snapshot=os.path.basename(snap), setting=setting,
                            coreSeconds=run["coreSeconds"], outer=run["outer"],
-                           residual=run["residual"])
+                           residual=run["residual"], steps=args.steps)
                 rows.append(row)
                 print("  %-16s %6.1f core-s %4d outer, |dU| rms %.1e max "
                       "%.1e" % (setting, run["coreSeconds"], run["outer"],

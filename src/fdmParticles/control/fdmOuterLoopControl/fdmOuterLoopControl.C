@@ -20,7 +20,8 @@ void Foam::fdmOuterLoopControl::read()
         {
             "nCorrectors", "nOuterCorrectors", "outerTolerance",
             "pRefCell", "pRefValue", "pRefPoint", "acceleration",
-            "accelerationDepth"
+            "accelerationDepth", "layerMeanCorrection",
+            "layerMeanViscosityRatio"
         },
         algorithmName_ + " block"
     );
@@ -75,6 +76,18 @@ void Foam::fdmOuterLoopControl::read()
             << " anderson" << exit(FatalIOError);
     }
 
+    layerMeanCorrection_ = d.getOrDefault<bool>("layerMeanCorrection", false);
+    layerMeanViscosityRatio_ =
+        d.getOrDefault<scalar>("layerMeanViscosityRatio", 16);
+    if (!(layerMeanViscosityRatio_ >= 1 && layerMeanViscosityRatio_ < GREAT))
+    {
+        FatalIOErrorInFunction(d)
+            << "layerMeanViscosityRatio " << layerMeanViscosityRatio_
+            << " in " << d.name() << ": allowed values are finite numbers"
+            << " >= 1 (16: validation/benchmarks/frozenCouette)"
+            << exit(FatalIOError);
+    }
+
     const dictionary& solDict = mesh_.solutionDict();
     const bool relaxed = mesh_.relaxEquation("U");
     const scalar alpha = relaxed ? mesh_.equationRelaxationFactor("U") : 1;
@@ -106,6 +119,8 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
     nOuterCorrectors_(1),
     outerTolerance_(0),
     accelerationDepth_(0),
+    layerMeanCorrection_(false),
+    layerMeanViscosityRatio_(16),
     iteration_(0),
     changeU_(GREAT),
     residualU_(GREAT),
