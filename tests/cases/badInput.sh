@@ -40,6 +40,9 @@ expectFatal missingRelaxation system/fvSolution \
 expectFatal unknownAcceleration system/fvSolution \
     's/^ *nCorrectors .*$/&\n    acceleration fast;/' "acceleration fast" \
     "none (thesis outer iteration) and anderson"
+expectFatal smallLayerMeanViscosity system/fvSolution \
+    's/^ *nCorrectors .*$/&\n    layerMeanCorrection on; layerMeanViscosityRatio 0.5;/' \
+    "layerMeanViscosityRatio 0.5" "finite numbers >= 1"
 expectFatal misspeltSimplecKey system/fvSolution \
     's/nOuterCorrectors/nOuterCorrector/' "Unknown keyword 'nOuterCorrector'" \
     "nearest valid spelling: 'nOuterCorrectors'"

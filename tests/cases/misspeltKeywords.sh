@@ -35,6 +35,8 @@ cp -r "$FDM_PROJECT_DIR/tutorials/couette"/{0,constant,system} "$couette"/
             --seed 1 -o constant/particleList
 ) || exit 1
 $sweep "$couette" constant/particleProperties fdmSuspensionFoam || failed=1
+$sweep "$couette" system/fvSolution fdmSuspensionFoam --within SIMPLEC \
+    || failed=1
 $sweep "$couette" system/controlDict fdmSuspensionFoam \
     --within suspensionStress || failed=1
 
