@@ -7,8 +7,11 @@ run_case       blockMesh + fdmSuspensionFoam; the last particles.h5 record
 read_last_record   that record of a case already run
 run_logged, foam_set, foam_get   a command, a dictionary entry, in a case
 timing_lines   the cumulative Timing lines of an fdmSuspensionFoam log
+snapshot_case  constant/, system/ and one written time of a run, copied
+work_lock      one benchmark at a time in a work folder
 """
 
+import fcntl
 import os
 import re
 import shutil
@@ -133,3 +136,34 @@ TIMING = re.compile(
 def timing_lines(text):
     """Each Timing report of a log as a list of floats, TIMING_COLUMNS."""
     return [[float(v) for v in m.groups()] for m in TIMING.finditer(text)]
+
+
+def snapshot_case(source, time, work):
+    """work/snapshots/<source name>_<time>: constant/, system/ and the
+    (reconstructed, when the run was decomposed) time of a run; made once."""
+    name = "%s_%s" % (os.path.basename(os.path.normpath(source)), time)
+    case = os.path.join(work, "snapshots", name)
+    if os.path.isfile(os.path.join(case, time, "U")):
+        return case
+    if not os.path.isfile(os.path.join(source, time, "U")):
+        run_logged(["reconstructPar", "-time", time], source,
+                   "log.reconstructPar")
+    shutil.rmtree(case, ignore_errors=True)
+    os.makedirs(case)
+    for d in ("constant", "system", time):
+        shutil.copytree(os.path.join(source, d), os.path.join(case, d))
+    return case
+
+
+def work_lock(work):
+    """Hold work/.lock for the life of the process, or stop: a second
+    invocation would remove the unfinished cases the first is running.
+    The lock goes with the process (flock), also when it is killed."""
+    os.makedirs(work, exist_ok=True)
+    handle = open(os.path.join(work, ".lock"), "w")
+    try:
+        fcntl.flock(handle, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except OSError:
+        raise SystemExit("%s is in use by another run of this benchmark; "
+                         "wait for it to end" % work)
+    return handle

@@ -1,9 +1,11 @@
 """timing_lines reads the solver's Timing report (reportTimings.H) as the
-benchmarks use it; the sample is a line pair fdmSuspensionFoam wrote."""
+benchmarks use it; the sample is a line pair fdmSuspensionFoam wrote.
+work_lock keeps a second benchmark run out of a work folder in use."""
 
+import tempfile
 import unittest
 
-from fdmPost.caseRunner import TIMING_COLUMNS, timing_lines
+from fdmPost.caseRunner import TIMING_COLUMNS, timing_lines, work_lock
 
 LOG = """Time = 2.004
 Timing [s] after 12 outer iterations in 1 step(s): total 1, per step 1, \
@@ -34,3 +36,14 @@ class TimingLinesTest(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class WorkLockTest(unittest.TestCase):
+    def test_second_holder_is_refused_until_the_first_ends(self):
+        with tempfile.TemporaryDirectory() as work:
+            first = work_lock(work)
+            with self.assertRaises(SystemExit) as stop:
+                work_lock(work)
+            self.assertIn("in use by another run", str(stop.exception))
+            first.close()   # as when the first process ends
+            work_lock(work).close()

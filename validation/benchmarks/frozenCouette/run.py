@@ -72,7 +72,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.environ["FDM_PROJECT_DIR"]
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (foam_get, foam_set, run_logged,  # noqa
-                                timing_lines)
+                                snapshot_case, timing_lines, work_lock)
 from fdmPost.particleCase import read_list  # noqa: E402
 
 STATE_KEYS = (("radius", 1), ("velocity", 3), ("angularVelocity", 3),
@@ -93,6 +93,11 @@ SETTINGS = {
                             ("coupling.lambdaTolerance", 0, "pp")),
     "layerMean": (("SIMPLEC.layerMeanCorrection", "on", "fv"),
                   ("SIMPLEC.layerMeanViscosityRatio", 16, "fv")),
+    "layerMeanNCorr1": (("SIMPLEC.layerMeanCorrection", "on", "fv"),
+                        ("SIMPLEC.nCorrectors", 1, "fv")),
+    "layerMeanLoose": (("SIMPLEC.layerMeanCorrection", "on", "fv"),
+                       ("solvers.p.relTol", 0.2, "fv"),
+                       ("solvers.U.relTol", 0.3, "fv")),
     "gamgU": PREVIOUS + (("solvers.U", "{solver GAMG; smoother GaussSeidel; "
                           "tolerance 1e-7; relTol 0.1;}", "fv"),),
     "relax0.97": PREVIOUS + (("relaxationFactors.equations.U", 0.97, "fv"),),
@@ -104,21 +109,6 @@ SETTINGS = {
                   ("solvers.U.tolerance", 1e-12, "fv"),
                   ("solvers.U.relTol", 0, "fv")),
 }
-
-
-def snapshot_case(source, time, work):
-    """constant/, system/ and the (reconstructed) time T of a run."""
-    name = "%s_%s" % (os.path.basename(os.path.normpath(source)), time)
-    case = os.path.join(work, "snapshots", name)
-    if os.path.isfile(os.path.join(case, time, "U")):
-        return case
-    if not os.path.isfile(os.path.join(source, time, "U")):
-        run_logged(["reconstructPar", "-time", time], source, "log.reconstructPar")
-    shutil.rmtree(case, ignore_errors=True)
-    os.makedirs(case)
-    for d in ("constant", "system", time):
-        shutil.copytree(os.path.join(source, d), os.path.join(case, d))
-    return case
 
 
 def setting_case(snapshot, time, setting, work, steps=1):
@@ -262,7 +252,7 @@ def main():
                     "(more than one lets a setting's own state settle)")
     args = ap.parse_args()
     work = os.path.join(PROJECT, "build", "benchmarks", "frozenCouette")
-    os.makedirs(work, exist_ok=True)
+    lock = work_lock(work)  # noqa: F841 (held until the process ends)
 
     rows = []
     for spec in args.snapshot:

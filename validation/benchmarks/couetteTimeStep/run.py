@@ -1,0 +1,229 @@
+#!/usr/bin/env python3
+"""Benchmark (issue 30, item 1, dynamics): how the time step changes the
+rheology of the sheared Couette suspension, from one common start.
+
+From a written time T of a Couette run (runPoint), the suspension is
+sheared over a short strain window with each time step, the current
+solver settings otherwise.  Over a window this short the trajectories of
+the runs stay close (the suspension has not yet decorrelated), so the
+differences between them are the time-step error itself, not statistics:
+per step, the core relative viscosity, N1/Sigma_xy, N2/Sigma_xy and the
+contact share of the core stress (suspensionStress, each step) are
+compared with the run of the smallest step, interpolated to the same
+times (rms and max over the window), and the final particle positions too
+(rms and max distance in a1, periodic images taken into account).  The
+cost per unit strain is the solve time of the Timing lines (core-seconds
+when each run has a core to itself: --jobs no more than the cores).
+
+    run.py --snapshot CASE:T [--dts 1e-3,2e-3,4e-3,8e-3] [--window 0.24]
+           [--jobs 2]
+
+Writes report.md and timeStep.png here (cases in
+build/benchmarks/couetteTimeStep).
+"""
+
+import argparse
+import os
+import re
+import shutil
+import subprocess
+import sys
+from time import sleep
+from datetime import date
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PROJECT = os.environ["FDM_PROJECT_DIR"]
+sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
+from fdmPost.caseRunner import (foam_set, in_case, snapshot_case,  # noqa
+                                timing_lines, work_lock)
+from fdmPost.particleCase import series_files, series_rows  # noqa
+
+# Columns of suspensionStress.dat compared (after Time)
+QUANTITIES = (("etaRelCore", 7), ("N1Core/Sigma_xy", 9),
+              ("N2Core/Sigma_xy", 10), ("contactShareCore", 8))
+
+
+def record_at(case, time):
+    """Positions and radii of the particles.h5 record at `time`, or None."""
+    import h5py
+    path = os.path.join(case, "postProcessing", "particles.h5")
+    if not os.path.isfile(path):
+        return None
+    with h5py.File(path, "r") as f:
+        hit = np.flatnonzero(np.abs(np.asarray(f["time"]) - float(time))
+                             < 1e-9)
+        if not len(hit):
+            return None
+        return (np.array(f["position"][hit[-1]]),
+                np.array(f["radius"][hit[-1]]).ravel())
+
+
+def finished(case, end):
+    log = os.path.join(case, "log.fdmSuspensionFoam")
+    return (os.path.isfile(log) and "\nEnd\n" in open(log).read()
+            and record_at(case, end) is not None)
+
+
+def prepare(snapshot, time, dt, window, work):
+    case = os.path.join(work, "dt_%s" % dt)
+    end = "%.12g" % (float(time) + window)
+    if finished(case, end):
+        return case, end, False
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(snapshot, case)
+    cd, fv, pp = ("system/controlDict", "system/fvSolution",
+                  "constant/particleProperties")
+    foam_set(case, "startFrom", "latestTime", cd)
+    foam_set(case, "deltaT", dt, cd)
+    foam_set(case, "endTime", end, cd)
+    # Fields once, at the end (runTime: counted from this run's start)
+    foam_set(case, "writeControl", "runTime", cd)
+    foam_set(case, "writeInterval", window, cd)
+    for key in ("executeControl", "writeControl"):
+        foam_set(case, "functions.suspensionStress.%s" % key, "timeStep", cd)
+    # Positions every step (particles.h5), the end included
+    foam_set(case, "output.timeSeriesInterval", 1, pp)
+    # The current solver defaults (the snapshot may predate them)
+    foam_set(case, "SIMPLEC.layerMeanCorrection", "on", fv)
+    return case, end, True
+
+
+def run_all(cases, jobs):
+    """fdmSuspensionFoam in each case, at most `jobs` at once."""
+    waiting, running = list(cases), []
+    while waiting or running:
+        while waiting and len(running) < jobs:
+            case = waiting.pop(0)
+            log = open(os.path.join(case, "log.fdmSuspensionFoam"), "w")
+            running.append((case, subprocess.Popen(
+                ["fdmSuspensionFoam"], cwd=case, stdout=log,
+                stderr=subprocess.STDOUT, env=in_case(case))))
+        sleep(1)
+        for case, proc in list(running):
+            if proc.poll() is not None:
+                running.remove((case, proc))
+                if proc.returncode != 0:
+                    raise RuntimeError("fdmSuspensionFoam failed in %s"
+                                       % case)
+
+
+def box_lengths(case):
+    text = open(os.path.join(case, "system", "blockMeshDict")).read()
+    return np.array([float(re.search(r"^%s\s+(\S+);" % k, text,
+                                     re.M).group(1))
+                     for k in ("Lx", "Ly", "Lz")])
+
+
+def measure(case, end, window):
+    rows = series_rows(series_files(case, "suspensionStress",
+                                    "suspensionStress"))
+    timing = timing_lines(open(os.path.join(case,
+                                            "log.fdmSuspensionFoam")).read())
+    last = timing[-1]
+    text = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
+    return {"rows": rows,
+            "belowFloor": len(re.findall(r"below the barrier floor", text)),
+            "coreSecondsPerStrain": sum(last[3:9]) / window,
+            "outerPerStep": last[0] / last[1],
+            "positions": record_at(case, end)}
+
+
+def compare(run, ref, box):
+    row = {}
+    t = run["rows"][:, 0]
+    for name, col in QUANTITIES:
+        d = run["rows"][:, col] - np.interp(t, ref["rows"][:, 0],
+                                            ref["rows"][:, col])
+        row[name] = (run["rows"][:, col].mean(), np.sqrt(np.mean(d ** 2)),
+                     np.abs(d).max())
+    x, radius = run["positions"]
+    dx = x - ref["positions"][0]
+    for k in (0, 2):    # periodic flow and vorticity directions
+        dx[:, k] -= box[k] * np.round(dx[:, k] / box[k])
+    d = np.linalg.norm(dx, axis=1) / radius.min()
+    row["position"] = (np.sqrt(np.mean(d ** 2)), d.max())
+    return row
+
+
+def write_report(results, dts, window, snapshot, time):
+    lines = [
+        "# Time step against rheology: the sheared Couette suspension",
+        "",
+        "From %s at strain %s, sheared over %s strain per time step "
+        "(suspensionStress each step); differences against the smallest "
+        "step, interpolated to each run's times (rms / max over the "
+        "window); final positions in a1.  Cost from the Timing lines, %s "
+        "(%d cores), %s." % (os.path.basename(snapshot), time, window,
+                             os.uname().nodename, os.cpu_count(),
+                             date.today().isoformat()),
+        "",
+        "| gammaDot dt | core-s per strain | outer per step | steps with "
+        "gaps below the contact floor | " +
+        " | ".join("%s mean, rms diff, max diff" % n for n, _ in QUANTITIES) +
+        " | positions rms, max |",
+        "|---" * (5 + len(QUANTITIES)) + "|",
+    ]
+    for dt in dts:
+        r = results[dt]
+        cells = ["%.3g, %.1e, %.1e" % r[n] for n, _ in QUANTITIES]
+        lines.append("| %s | %.0f | %.1f | %d | %s | %.1e, %.1e |" % (
+            dt, r["coreSecondsPerStrain"], r["outerPerStep"], r["belowFloor"],
+            " | ".join(cells), *r["position"]))
+    with open(os.path.join(HERE, "report.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("wrote", os.path.join(HERE, "report.md"))
+
+
+def plot(runs, dts):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, len(QUANTITIES), figsize=(16, 3.8))
+    for ax, (name, col) in zip(axes, QUANTITIES):
+        for dt in dts:
+            rows = runs[dt]["rows"]
+            ax.plot(rows[:, 0], rows[:, col], label="gammaDot dt %s" % dt)
+        ax.set_xlabel("strain")
+        ax.set_title(name)
+    axes[0].legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, "timeStep.png"), dpi=110)
+
+
+def main():
+    ap = argparse.ArgumentParser(
+        description=__doc__,
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--snapshot", required=True, help="CASE:T")
+    ap.add_argument("--dts", default="1e-3,2e-3,4e-3,8e-3")
+    ap.add_argument("--window", type=float, default=0.24)
+    ap.add_argument("--jobs", type=int, default=2)
+    args = ap.parse_args()
+    dts = sorted(args.dts.split(","), key=float)
+    for dt in dts:
+        steps = args.window / float(dt)
+        if abs(steps - round(steps)) > 1e-6 * steps:
+            raise SystemExit("--window %s is not a whole number of steps of "
+                             "%s" % (args.window, dt))
+    work = os.path.join(PROJECT, "build", "benchmarks", "couetteTimeStep")
+    lock = work_lock(work)  # noqa: F841 (held until the process ends)
+    source, _, time = args.snapshot.rpartition(":")
+    snap = snapshot_case(os.path.abspath(source), time, work)
+    prepared = {dt: prepare(snap, time, dt, args.window, work) for dt in dts}
+    run_all([c for c, _, todo in prepared.values() if todo], args.jobs)
+    runs = {dt: measure(c, e, args.window) for dt, (c, e, _) in
+            prepared.items()}
+    box = box_lengths(snap)
+    results = {}
+    for dt in dts:
+        results[dt] = compare(runs[dt], runs[dts[0]], box)
+        results[dt].update((k, runs[dt][k]) for k in (
+            "coreSecondsPerStrain", "outerPerStep", "belowFloor"))
+    write_report(results, dts, args.window, snap, time)
+    plot(runs, dts)
+
+
+if __name__ == "__main__":
+    main()
