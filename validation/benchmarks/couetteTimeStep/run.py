@@ -8,7 +8,7 @@ solver settings otherwise.  Over a window this short the trajectories of
 the runs stay close (the suspension has not yet decorrelated), so the
 differences between them are the time-step error itself, not statistics:
 per step, the core relative viscosity, N1/Sigma_xy, N2/Sigma_xy and the
-contact share of the core stress (suspensionStress, each step) are
+contact share of the core stress (from the particles.h5 records) are
 compared with the run of the smallest step, interpolated to the same
 times (rms and max over the window), and the final particle positions too
 (rms and max distance in a1, periodic images taken into account).  The
@@ -38,11 +38,11 @@ PROJECT = os.environ["FDM_PROJECT_DIR"]
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (foam_set, in_case, snapshot_case,  # noqa
                                 timing_lines, work_lock)
-from fdmPost.particleCase import series_files, series_rows  # noqa
+from fdmPost.rheology import channel_case  # noqa
 
-# Columns of suspensionStress.dat compared (after Time)
-QUANTITIES = (("etaRelCore", 7), ("N1Core/Sigma_xy", 9),
-              ("N2Core/Sigma_xy", 10), ("contactShareCore", 8))
+# Core quantities compared, per particles.h5 record
+QUANTITIES = ("etaCore", "N1/Sigma_xy", "N2/Sigma_xy", "contactShare")
+WALL_LAYER = 5      # a1, as runPoint for a gap of 20 a1
 
 
 def record_at(case, time):
@@ -81,8 +81,7 @@ def prepare(snapshot, time, dt, window, work):
     # Fields once, at the end (runTime: counted from this run's start)
     foam_set(case, "writeControl", "runTime", cd)
     foam_set(case, "writeInterval", window, cd)
-    for key in ("executeControl", "writeControl"):
-        foam_set(case, "functions.suspensionStress.%s" % key, "timeStep", cd)
+    foam_set(case, "functions", "{}", cd)
     # Positions every step (particles.h5), the end included
     foam_set(case, "output.timeSeriesInterval", 1, pp)
     # The current solver defaults (the snapshot may predate them)
@@ -116,14 +115,23 @@ def box_lengths(case):
                      for k in ("Lx", "Ly", "Lz")])
 
 
+def core_series(case):
+    """Per record of particles.h5: time and the core eta (eq 2.76, per
+    record), N1, N2 and the contact share of Sigma_xy (eq 4.13)."""
+    cs, _, _ = channel_case(case, WALL_LAYER)
+    g, _, hp, c = cs.series()
+    sxy = cs.eta * g + hp[:, 0, 1] + c[:, 0, 1]
+    part = hp + c
+    return cs.t, np.column_stack((
+        sxy / (cs.eta * g), (part[:, 0, 0] - part[:, 1, 1]) / sxy,
+        (part[:, 1, 1] - part[:, 2, 2]) / sxy, c[:, 0, 1] / sxy))
+
+
 def measure(case, end, window):
-    rows = series_rows(series_files(case, "suspensionStress",
-                                    "suspensionStress"))
-    timing = timing_lines(open(os.path.join(case,
-                                            "log.fdmSuspensionFoam")).read())
-    last = timing[-1]
     text = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
-    return {"rows": rows,
+    last = timing_lines(text)[-1]
+    t, values = core_series(case)
+    return {"t": t, "values": values,
             "belowFloor": len(re.findall(r"below the barrier floor", text)),
             "coreSecondsPerStrain": sum(last[3:9]) / window,
             "outerPerStep": last[0] / last[1],
@@ -132,11 +140,10 @@ def measure(case, end, window):
 
 def compare(run, ref, box):
     row = {}
-    t = run["rows"][:, 0]
-    for name, col in QUANTITIES:
-        d = run["rows"][:, col] - np.interp(t, ref["rows"][:, 0],
-                                            ref["rows"][:, col])
-        row[name] = (run["rows"][:, col].mean(), np.sqrt(np.mean(d ** 2)),
+    for i, name in enumerate(QUANTITIES):
+        d = run["values"][:, i] - np.interp(run["t"], ref["t"],
+                                            ref["values"][:, i])
+        row[name] = (run["values"][:, i].mean(), np.sqrt(np.mean(d ** 2)),
                      np.abs(d).max())
     x, radius = run["positions"]
     dx = x - ref["positions"][0]
@@ -152,22 +159,24 @@ def write_report(results, dts, window, snapshot, time):
         "# Time step against rheology: the sheared Couette suspension",
         "",
         "From %s at strain %s, sheared over %s strain per time step "
-        "(suspensionStress each step); differences against the smallest "
+        "(core of the particles.h5 records, wall layers %d a1); differences "
+        "against the smallest "
         "step, interpolated to each run's times (rms / max over the "
         "window); final positions in a1.  Cost from the Timing lines, %s "
         "(%d cores), %s." % (os.path.basename(snapshot), time, window,
+                             WALL_LAYER,
                              os.uname().nodename, os.cpu_count(),
                              date.today().isoformat()),
         "",
         "| gammaDot dt | core-s per strain | outer per step | steps with "
         "gaps below the contact floor | " +
-        " | ".join("%s mean, rms diff, max diff" % n for n, _ in QUANTITIES) +
+        " | ".join("%s mean, rms diff, max diff" % n for n in QUANTITIES) +
         " | positions rms, max |",
         "|---" * (5 + len(QUANTITIES)) + "|",
     ]
     for dt in dts:
         r = results[dt]
-        cells = ["%.3g, %.1e, %.1e" % r[n] for n, _ in QUANTITIES]
+        cells = ["%.3g, %.1e, %.1e" % r[n] for n in QUANTITIES]
         lines.append("| %s | %.0f | %.1f | %d | %s | %.1e, %.1e |" % (
             dt, r["coreSecondsPerStrain"], r["outerPerStep"], r["belowFloor"],
             " | ".join(cells), *r["position"]))
@@ -181,10 +190,10 @@ def plot(runs, dts):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(1, len(QUANTITIES), figsize=(16, 3.8))
-    for ax, (name, col) in zip(axes, QUANTITIES):
+    for i, (ax, name) in enumerate(zip(axes, QUANTITIES)):
         for dt in dts:
-            rows = runs[dt]["rows"]
-            ax.plot(rows[:, 0], rows[:, col], label="gammaDot dt %s" % dt)
+            ax.plot(runs[dt]["t"], runs[dt]["values"][:, i],
+                    label="gammaDot dt %s" % dt)
         ax.set_xlabel("strain")
         ax.set_title(name)
     axes[0].legend(fontsize=8)
