@@ -83,6 +83,13 @@ FILES = {"fv": "system/fvSolution", "pp": "constant/particleProperties"}
 # The snapshot's own settings with the layer means left to the outer
 # iteration (the tutorial's until the layer-mean correction)
 PREVIOUS = (("SIMPLEC.layerMeanCorrection", "off", "fv"),)
+REFERENCE = (("SIMPLEC.nOuterCorrectors", 3000, "fv"),
+             ("coupling.lambdaTolerance", 1e-9, "pp"),
+             ("coupling.particleSolveTolerance", 1e-14, "pp"),
+             ("solvers.p.tolerance", 1e-12, "fv"),
+             ("solvers.p.relTol", 0, "fv"),
+             ("solvers.U.tolerance", 1e-12, "fv"),
+             ("solvers.U.relTol", 0, "fv"))
 # Each setting: the dictionary entries it changes from the case's own
 SETTINGS = {
     "default": PREVIOUS,
@@ -101,13 +108,12 @@ SETTINGS = {
     "gamgU": PREVIOUS + (("solvers.U", "{solver GAMG; smoother GaussSeidel; "
                           "tolerance 1e-7; relTol 0.1;}", "fv"),),
     "relax0.97": PREVIOUS + (("relaxationFactors.equations.U", 0.97, "fv"),),
-    "reference": (("SIMPLEC.nOuterCorrectors", 3000, "fv"),
-                  ("coupling.lambdaTolerance", 1e-9, "pp"),
-                  ("coupling.particleSolveTolerance", 1e-14, "pp"),
-                  ("solvers.p.tolerance", 1e-12, "fv"),
-                  ("solvers.p.relTol", 0, "fv"),
-                  ("solvers.U.tolerance", 1e-12, "fv"),
-                  ("solvers.U.relTol", 0, "fv")),
+    "reference": REFERENCE,
+    # The steady solve of a frozen configuration (what validations do):
+    # the reference's tolerances, old and new outer iteration
+    "steady": PREVIOUS + REFERENCE,
+    "steadyLayerMean": REFERENCE + (("SIMPLEC.layerMeanCorrection", "on",
+                                     "fv"),),
 }
 
 
