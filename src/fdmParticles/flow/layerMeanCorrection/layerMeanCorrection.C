@@ -118,7 +118,7 @@ Foam::layerMeanCorrection::layerMeanCorrection
 
 void Foam::layerMeanCorrection::correct
 (
-    const volVectorField& residual,
+    const vectorField& residual,
     const scalar nu,
     volVectorField& U,
     surfaceScalarField& phi
