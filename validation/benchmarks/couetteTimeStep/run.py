@@ -108,37 +108,30 @@ def run_all(cases, jobs):
                                        % case)
 
 
-def box_lengths(case):
-    text = open(os.path.join(case, "system", "blockMeshDict")).read()
-    return np.array([float(re.search(r"^%s\s+(\S+);" % k, text,
-                                     re.M).group(1))
-                     for k in ("Lx", "Ly", "Lz")])
-
-
 def core_series(case):
     """Per record of particles.h5: time and the core eta (eq 2.76, per
-    record), N1, N2 and the contact share of Sigma_xy (eq 4.13)."""
-    cs, _, _ = channel_case(case, WALL_LAYER)
+    record), N1, N2 and the contact share of Sigma_xy (eq 4.13); the box."""
+    cs, box, _ = channel_case(case, WALL_LAYER)
     g, _, hp, c = cs.series()
     sxy = cs.eta * g + hp[:, 0, 1] + c[:, 0, 1]
     part = hp + c
     return cs.t, np.column_stack((
         sxy / (cs.eta * g), (part[:, 0, 0] - part[:, 1, 1]) / sxy,
-        (part[:, 1, 1] - part[:, 2, 2]) / sxy, c[:, 0, 1] / sxy))
+        (part[:, 1, 1] - part[:, 2, 2]) / sxy, c[:, 0, 1] / sxy)), box
 
 
 def measure(case, end, window):
     text = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
     last = timing_lines(text)[-1]
-    t, values = core_series(case)
-    return {"t": t, "values": values,
+    t, values, box = core_series(case)
+    return {"t": t, "values": values, "box": box,
             "belowFloor": len(re.findall(r"below the barrier floor", text)),
             "coreSecondsPerStrain": sum(last[3:9]) / window,
             "outerPerStep": last[0] / last[1],
             "positions": record_at(case, end)}
 
 
-def compare(run, ref, box):
+def compare(run, ref):
     row = {}
     for i, name in enumerate(QUANTITIES):
         d = run["values"][:, i] - np.interp(run["t"], ref["t"],
@@ -148,7 +141,7 @@ def compare(run, ref, box):
     x, radius = run["positions"]
     dx = x - ref["positions"][0]
     for k in (0, 2):    # periodic flow and vorticity directions
-        dx[:, k] -= box[k] * np.round(dx[:, k] / box[k])
+        dx[:, k] -= run["box"][k] * np.round(dx[:, k] / run["box"][k])
     d = np.linalg.norm(dx, axis=1) / radius.min()
     row["position"] = (np.sqrt(np.mean(d ** 2)), d.max())
     return row
@@ -224,10 +217,9 @@ def main():
     run_all([c for c, _, todo in prepared.values() if todo], args.jobs)
     runs = {dt: measure(c, e, args.window) for dt, (c, e, _) in
             prepared.items()}
-    box = box_lengths(snap)
     results = {}
     for dt in dts:
-        results[dt] = compare(runs[dt], runs[dts[0]], box)
+        results[dt] = compare(runs[dt], runs[dts[0]])
         results[dt].update((k, runs[dt][k]) for k in (
             "coreSecondsPerStrain", "outerPerStep", "belowFloor"))
     write_report(results, dts, args.window, snap, time)

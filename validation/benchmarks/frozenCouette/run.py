@@ -74,6 +74,7 @@ sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (foam_get, foam_set, run_logged,  # noqa
                                 snapshot_case, timing_lines, work_lock)
 from fdmPost.particleCase import read_list  # noqa: E402
+from fdmPost.rheology import number  # noqa: E402
 
 STATE_KEYS = (("radius", 1), ("velocity", 3), ("angularVelocity", 3),
               ("stresslet", 6), ("contactStresslet", 6))
@@ -234,15 +235,14 @@ def errors(run, ref, shear_rate, volume):
 def cell_volume_and_rate(case):
     """Volume from the blockMeshDict box, shear rate from the wall speeds."""
     text = open(os.path.join(case, "system", "blockMeshDict")).read()
-    box = [float(re.search(r"^%s\s+(\S+);" % k, text, re.M).group(1))
-           for k in ("Lx", "Ly", "Lz")]
+    box = [number(text, k) for k in ("Lx", "Ly", "Lz")]
     top = foam_get(case, "boundaryField.topWall.value", "0/U"
                    if os.path.isfile(os.path.join(case, "0", "U")) else
                    "%s/U" % sorted(d for d in os.listdir(case)
                                    if re.fullmatch(r"[0-9.e+-]+", d))[0])
-    number = r"[-+0-9.eE]+"
+    real = r"[-+0-9.eE]+"
     u_top = float(re.search(r"\(\s*(%s)\s+%s\s+%s\s*\)"
-                            % (number, number, number), top).group(1))
+                            % (real, real, real), top).group(1))
     return box[0] * box[1] * box[2], 2 * abs(u_top) / box[1]
 
 

@@ -56,30 +56,46 @@ void Foam::layerMeanCorrection::findWalls(const string& user)
 }
 
 
+namespace Foam
+{
+namespace
+{
+
+// The distinct values of a list, ascending, merged within tol
+scalarList distinctSorted(scalarList values, const scalar tol)
+{
+    std::sort(values.begin(), values.end());
+    DynamicList<scalar> distinct(values.size());
+    for (const scalar v : values)
+    {
+        if (distinct.empty() || v - distinct.last() > tol)
+        {
+            distinct.append(v);
+        }
+    }
+    return scalarList(std::move(distinct));
+}
+
+} // namespace
+} // namespace Foam
+
+
 void Foam::layerMeanCorrection::findLayers()
 {
-    // Distinct centre coordinates of all ranks, merged within a tolerance
+    // Distinct centre coordinates of all ranks (each rank sends its own
+    // distinct ones, a layer count rather than a cell count)
     const scalar tol = 1e-8*(high_ - low_);
     const scalarField y(mesh_.C().primitiveField().component(normal_));
     List<scalarList> perRank(Pstream::nProcs());
-    perRank[Pstream::myProcNo()] = y;
+    perRank[Pstream::myProcNo()] = distinctSorted(y, tol);
     Pstream::gatherList(perRank);
     Pstream::scatterList(perRank);
-    std::vector<scalar> all;
+    DynamicList<scalar> all;
     for (const scalarList& l : perRank)
     {
-        all.insert(all.end(), l.begin(), l.end());
+        all.append(l);
     }
-    std::sort(all.begin(), all.end());
-    DynamicList<scalar> centres;
-    for (const scalar v : all)
-    {
-        if (centres.empty() || v - centres.last() > tol)
-        {
-            centres.append(v);
-        }
-    }
-    layerCentre_.transfer(centres);
+    layerCentre_ = distinctSorted(all, tol);
 
     layerOfCell_.setSize(y.size());
     layerVolume_ = List<scalar>(nLayers(), Zero);
