@@ -15,16 +15,15 @@ import argparse
 import os
 import sys
 
-import h5py
 
 import numpy as np
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from fdmPost.particleCase import momentum_balance  # noqa: E402
 from fdmPost.rheology import (autocorrelation_time, couette_case,  # noqa: E402
-                              core_rheology, maron_pierce)
+                              core_rheology, maron_pierce,
+                              mechanical_consistency)
 
 
 def main():
@@ -54,27 +53,8 @@ def main():
     tau = autocorrelation_time(etaInst, np.median(np.diff(strain)))
     samples = (strain[-1] - args.start) / (2 * tau)
 
-    # Mechanical consistency (Table 4.8): wall force against the particles'
-    # lambda (eq 4.14), lambda over the volume against the particle sum
-    # (eq 4.16) and the per-particle force and torque balance
-    # F^h + F^c = 0 (eq 4.17).  Each column is an RMS over records (and
-    # particles) over the RMS of the reference, the thesis' overbar read
-    # as the mean of the square: the means themselves vanish (the two
-    # walls' drags cancel, and so do the contact forces over particles).
-    with h5py.File(f"{case}/postProcessing/particles.h5", "r") as f:
-        Fh, Fc = f["force"][steady], f["contactForce"][steady]
-        Th, Tc = f["torque"][steady], f["contactTorque"][steady]
-    mb = momentum_balance(case)
-    late = mb["time"] >= args.start / gamma0
-    lamV, parts, wall = (mb[k][late]
-                         for k in ("lambdaV", "lambdaParts", "wall"))
-
-    def rms(a):
-        """RMS over all axes but the last (the components)."""
-        return np.sqrt((a ** 2).mean(axis=tuple(range(a.ndim - 1))))
-
-    balance = [rms(wall + parts) / rms(wall), rms(lamV - parts) / rms(lamV),
-               rms(Fh + Fc) / rms(Fc), rms(Th + Tc) / rms(Tc)]
+    # Mechanical consistency (Table 4.8 columns)
+    balance = mechanical_consistency(case, args.start / gamma0)
 
     def pm(key, fmt=".3f"):
         m, e = r[key]

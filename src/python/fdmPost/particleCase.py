@@ -8,6 +8,7 @@ balance        postProcessing/momentumBalance/<t0>/momentumBalance.dat
 import glob
 import os
 import re
+import warnings
 
 import numpy as np
 
@@ -73,8 +74,12 @@ def series_files(case, folder, name):
 
 def series_rows(files):
     """The rows of time-series files (time in the first column) in run
-    order, one row per time: where runs overlap, the later run's row."""
-    data = np.vstack([np.loadtxt(f, ndmin=2) for f in files])
+    order, one row per time: where runs overlap, the later run's row.
+    Files with a header only (a run started at its end time) are skipped."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)  # empty input
+        tables = [np.loadtxt(f, ndmin=2) for f in files]
+    data = np.vstack([t for t in tables if t.size])
     _, last = np.unique(data[::-1, 0], return_index=True)
     return data[::-1][last]
 

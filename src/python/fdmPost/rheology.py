@@ -198,6 +198,36 @@ def core_rheology(cs, start_time, blocks=5, end_time=np.inf, series=None):
     return out
 
 
+def mechanical_consistency(case, start_time, end_time=np.inf):
+    """Mechanical consistency over start_time <= t < end_time (thesis 1,
+    Table 4.8 columns, x y z each): wall force against the particles'
+    lambda (eq 4.14), lambda over the volume against the particle sum
+    (eq 4.16), per-particle force and torque balance F^h + F^c = 0
+    (eq 4.17).  Each column is an RMS over records (and particles) over
+    the RMS of the reference, the thesis' overbar read as the mean of the
+    square: the means themselves vanish (the two walls' drags cancel, and
+    so do the contact forces over particles).  Returns a 4 x 3 array."""
+    import h5py
+    from fdmPost.particleCase import momentum_balance
+    with h5py.File(f"{case}/postProcessing/particles.h5", "r") as f:
+        t = np.asarray(f["time"])
+        keep = np.flatnonzero((t >= start_time) & (t < end_time))
+        Fh, Fc = f["force"][keep], f["contactForce"][keep]
+        Th, Tc = f["torque"][keep], f["contactTorque"][keep]
+    mb = momentum_balance(case)
+    late = (mb["time"] >= start_time) & (mb["time"] < end_time)
+    lamV, parts, wall = (mb[k][late]
+                         for k in ("lambdaV", "lambdaParts", "wall"))
+
+    def rms(a):
+        """RMS over all axes but the last (the components)."""
+        return np.sqrt((a ** 2).mean(axis=tuple(range(a.ndim - 1))))
+
+    return np.array([rms(wall + parts) / rms(wall),
+                     rms(lamV - parts) / rms(lamV),
+                     rms(Fh + Fc) / rms(Fc), rms(Th + Tc) / rms(Tc)])
+
+
 def maron_pierce(phi, alpha=0.803, phi_j=0.59):
     """Thesis fit eq 4.12: eta = alpha/(1 - phi/phi_J)^2."""
     return alpha / (1 - np.asarray(phi) / phi_j) ** 2

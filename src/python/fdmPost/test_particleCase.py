@@ -37,6 +37,16 @@ class SeriesTest(unittest.TestCase):
             # time 3: the restart's row, not the killed run's
             np.testing.assert_array_equal(rows[:, 1], [10, 11, 12, 13, 14])
 
+    def test_header_only_files_are_skipped(self):
+        with tempfile.TemporaryDirectory() as case:
+            d = os.path.join(case, "postProcessing", "balance")
+            # a run to 2, then two restarts at the end time (no steps)
+            write(os.path.join(d, "0", "balance.dat"), [[0, 10], [2, 12]])
+            write(os.path.join(d, "2", "balance.dat"), np.empty((0, 2)))
+            write(os.path.join(d, "2", "balance_1.dat"), np.empty((0, 2)))
+            rows = series_rows(series_files(case, "balance", "balance"))
+            np.testing.assert_array_equal(rows, [[0, 10], [2, 12]])
+
     def test_missing_series_is_an_error(self):
         with tempfile.TemporaryDirectory() as case:
             with self.assertRaises(FileNotFoundError):

@@ -1,13 +1,17 @@
 """Unit tests of fdmPost.rheology against exact geometry and stress
 identities."""
 
+import os
+import tempfile
 import unittest
 
+import h5py
 import numpy as np
 import scipy.signal
 
 from fdmPost.rheology import (CouetteSeries, autocorrelation_time,
-                              block_mean, slab_volume, symm6_to_tensor)
+                              block_mean, mechanical_consistency,
+                              slab_volume, symm6_to_tensor)
 
 
 class SlabVolume(unittest.TestCase):
@@ -89,6 +93,36 @@ class Couette(unittest.TestCase):
                                delta=0.05)
         white = autocorrelation_time(noise, dx)
         self.assertAlmostEqual(white / (0.5 * dx), 1.0, delta=0.05)
+
+
+class MechanicalConsistency(unittest.TestCase):
+    def test_columns_from_known_imbalances(self):
+        """Loads built with known relative imbalances per column: the
+        wall force off by 2 % of itself, lambda parts off by 1e-7, the
+        hydrodynamic force and torque off by 3e-3 and 5e-3 of contact."""
+        rng = np.random.default_rng(1)
+        t = np.arange(6.0)
+        Fc, Tc = rng.normal(size=(2, 6, 4, 3))
+        wall = rng.normal(size=(6, 3))
+        with tempfile.TemporaryDirectory() as case:
+            os.makedirs(f"{case}/postProcessing/momentumBalance/0")
+            with h5py.File(f"{case}/postProcessing/particles.h5", "w") as f:
+                f["time"] = t
+                f["contactForce"], f["contactTorque"] = Fc, Tc
+                Fh = -1.003 * Fc
+                Fh[0] = 0   # before the start: must not count
+                f["force"], f["torque"] = Fh, -1.005 * Tc
+            parts = -1.02 * wall
+            parts[0] = 0
+            rows = np.column_stack((t, parts * (1 + 1e-7), parts, wall,
+                                    np.zeros((6, 6))))
+            np.savetxt(f"{case}/postProcessing/momentumBalance/0/"
+                       "momentumBalance.dat", rows)
+            m = mechanical_consistency(case, 1.0)
+        np.testing.assert_allclose(m[0], 0.02, rtol=1e-9)
+        np.testing.assert_allclose(m[1], 1e-7 / (1 + 1e-7), rtol=1e-6)
+        np.testing.assert_allclose(m[2], 3e-3, rtol=1e-9)
+        np.testing.assert_allclose(m[3], 5e-3, rtol=1e-9)
 
 
 if __name__ == "__main__":

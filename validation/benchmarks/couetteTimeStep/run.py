@@ -18,7 +18,7 @@ when each run has a core to itself: --jobs no more than the cores).
     run.py --snapshot CASE:T [--dts 1e-3,2e-3,4e-3,8e-3] [--window 0.24]
            [--jobs 2]
 
-Writes report.md and timeStep.png here (cases in
+Writes report_windowW.md and timeStep_windowW.png here (cases in
 build/benchmarks/couetteTimeStep).
 """
 
@@ -38,10 +38,15 @@ PROJECT = os.environ["FDM_PROJECT_DIR"]
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (foam_set, in_case, snapshot_case,  # noqa
                                 timing_lines, work_lock)
-from fdmPost.rheology import channel_case  # noqa
+from fdmPost.rheology import (channel_case, core_rheology,  # noqa
+                              mechanical_consistency)
 
 # Core quantities compared, per particles.h5 record
 QUANTITIES = ("etaCore", "N1/Sigma_xy", "N2/Sigma_xy", "contactShare")
+# The same as window means (fdmPost.rheology.core_rheology keys)
+MEANS = ("etaCore", "N1", "N2", "contactShare", "phiCore")
+CONSISTENCY = ("wall vs particles", "volume vs particles",
+               "particle forces", "particle torques")
 WALL_LAYER = 5      # a1, as runPoint for a gap of 20 a1
 
 
@@ -67,7 +72,7 @@ def finished(case, end):
 
 
 def prepare(snapshot, time, dt, window, work):
-    case = os.path.join(work, "dt_%s" % dt)
+    case = os.path.join(work, "dt_%s_window%s" % (dt, window))
     end = "%.12g" % (float(time) + window)
     if finished(case, end):
         return case, end, False
@@ -90,8 +95,9 @@ def prepare(snapshot, time, dt, window, work):
 
 
 def run_all(cases, jobs):
-    """fdmSuspensionFoam in each case, at most `jobs` at once."""
-    waiting, running = list(cases), []
+    """fdmSuspensionFoam in each case, at most `jobs` at once; the cases
+    whose run failed (a time step too large stops on its own checks)."""
+    waiting, running, failed = list(cases), [], []
     while waiting or running:
         while waiting and len(running) < jobs:
             case = waiting.pop(0)
@@ -104,8 +110,9 @@ def run_all(cases, jobs):
             if proc.poll() is not None:
                 running.remove((case, proc))
                 if proc.returncode != 0:
-                    raise RuntimeError("fdmSuspensionFoam failed in %s"
-                                       % case)
+                    print("fdmSuspensionFoam failed in %s" % case)
+                    failed.append(case)
+    return failed
 
 
 def core_series(case):
@@ -120,11 +127,23 @@ def core_series(case):
         (part[:, 1, 1] - part[:, 2, 2]) / sxy, c[:, 0, 1] / sxy)), box
 
 
-def measure(case, end, window):
+def window_means(case, start):
+    """Window means over the whole run with their standard errors (5 block
+    means), and the Table 4.8 columns (rms over x y z)."""
+    cs, _, _ = channel_case(case, WALL_LAYER)
+    r = core_rheology(cs, start)
+    consistency = mechanical_consistency(case, start)
+    return ({k: r[k] for k in MEANS},
+            np.sqrt((consistency ** 2).mean(axis=1)))
+
+
+def measure(case, start, end, window):
     text = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
     last = timing_lines(text)[-1]
     t, values, box = core_series(case)
-    return {"t": t, "values": values, "box": box,
+    means, consistency = window_means(case, float(start))
+    return {"t": t, "values": values, "box": box, "means": means,
+            "consistency": consistency,
             "belowFloor": len(re.findall(r"below the barrier floor", text)),
             "coreSecondsPerStrain": sum(last[3:9]) / window,
             "outerPerStep": last[0] / last[1],
@@ -173,12 +192,39 @@ def write_report(results, dts, window, snapshot, time):
         lines.append("| %s | %.0f | %.1f | %d | %s | %.1e, %.1e |" % (
             dt, r["coreSecondsPerStrain"], r["outerPerStep"], r["belowFloor"],
             " | ".join(cells), *r["position"]))
-    with open(os.path.join(HERE, "report.md"), "w") as f:
+    lines += [
+        "",
+        "Window means over the whole window (standard error from 5 block "
+        "means; the runs decorrelate over a strain or so, so on windows "
+        "longer than that the differences are statistics plus time-step "
+        "error); in brackets the difference from the smallest step in "
+        "units of the combined standard error.  Table 4.8 columns: rms "
+        "over x, y, z.",
+        "",
+        "| gammaDot dt | " + " | ".join(MEANS) + " | " +
+        " | ".join(CONSISTENCY) + " |",
+        "|---" * (1 + len(MEANS) + len(CONSISTENCY)) + "|",
+    ]
+    ref = results[dts[0]]["means"]
+    for dt in dts:
+        m = results[dt]["means"]
+        cells = []
+        for k in MEANS:
+            (mean, err), (rmean, rerr) = m[k], ref[k]
+            z = (mean - rmean) / np.hypot(err, rerr) if dt != dts[0] \
+                else np.nan
+            cells.append("%.4g +- %.2g" % (mean, err) +
+                         ("" if np.isnan(z) else " (%+.1f)" % z))
+        lines.append("| %s | %s | %s |" % (
+            dt, " | ".join(cells),
+            " | ".join("%.2e" % c for c in results[dt]["consistency"])))
+    path = os.path.join(HERE, "report_window%g.md" % window)
+    with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
-    print("wrote", os.path.join(HERE, "report.md"))
+    print("wrote", path)
 
 
-def plot(runs, dts):
+def plot(runs, dts, window):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -191,7 +237,8 @@ def plot(runs, dts):
         ax.set_title(name)
     axes[0].legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "timeStep.png"), dpi=110)
+    fig.savefig(os.path.join(HERE, "timeStep_window%g.png" % window),
+                dpi=110)
 
 
 def main():
@@ -214,16 +261,19 @@ def main():
     source, _, time = args.snapshot.rpartition(":")
     snap = snapshot_case(os.path.abspath(source), time, work)
     prepared = {dt: prepare(snap, time, dt, args.window, work) for dt in dts}
-    run_all([c for c, _, todo in prepared.values() if todo], args.jobs)
-    runs = {dt: measure(c, e, args.window) for dt, (c, e, _) in
-            prepared.items()}
+    failed = run_all([c for c, _, todo in prepared.values() if todo],
+                     args.jobs)
+    dts = [dt for dt in dts if prepared[dt][0] not in failed]
+    runs = {dt: measure(prepared[dt][0], time, prepared[dt][1], args.window)
+            for dt in dts}
     results = {}
     for dt in dts:
         results[dt] = compare(runs[dt], runs[dts[0]])
         results[dt].update((k, runs[dt][k]) for k in (
-            "coreSecondsPerStrain", "outerPerStep", "belowFloor"))
+            "coreSecondsPerStrain", "outerPerStep", "belowFloor", "means",
+            "consistency"))
     write_report(results, dts, args.window, snap, time)
-    plot(runs, dts)
+    plot(runs, dts, args.window)
 
 
 if __name__ == "__main__":
