@@ -18,6 +18,10 @@ when each run has a core to itself: --jobs no more than the cores).
     run.py --snapshot CASE:T [--dts 1e-3,2e-3,4e-3,8e-3] [--window 0.24]
            [--jobs 2]
 
+A run DT+alphaF@TOL changes the lambda step factor (coupling
+alphaLambdaFactor F) and the lambda residual per step (lambdaTolerance
+TOL) as well; the smallest step of the list is the comparison.
+
 Writes report_windowW.md and timeStep_windowW.png here (cases in
 build/benchmarks/couetteTimeStep).
 """
@@ -71,8 +75,20 @@ def finished(case, end):
             and record_at(case, end) is not None)
 
 
-def prepare(snapshot, time, dt, window, work):
-    case = os.path.join(work, "dt_%s_window%s" % (dt, window))
+def parse_run(item):
+    """A run DT[+alphaF][@TOL]: gammaDot dt, and optionally the lambda step
+    factor alpha_lambda = F Delta^2/nu and the lambda residual per step."""
+    m = re.fullmatch(r"([^+@]+)(?:\+alpha([^@]+))?(?:@(.+))?", item)
+    if not m:
+        raise SystemExit("run %r is not DT[+alphaF][@TOL]" % item)
+    return m.groups()
+
+
+def prepare(snapshot, time, item, window, work):
+    dt, alpha, tol = parse_run(item)
+    case = os.path.join(work, "dt_%s%s%s_window%s" % (
+        dt, "_alpha%s" % alpha if alpha else "", "_tol%s" % tol if tol else "",
+        window))
     end = "%.12g" % (float(time) + window)
     if finished(case, end):
         return case, end, False
@@ -91,6 +107,10 @@ def prepare(snapshot, time, dt, window, work):
     foam_set(case, "output.timeSeriesInterval", 1, pp)
     # The current solver defaults (the snapshot may predate them)
     foam_set(case, "SIMPLEC.layerMeanCorrection", "on", fv)
+    if alpha:
+        foam_set(case, "coupling.alphaLambdaFactor", alpha, pp)
+    if tol:
+        foam_set(case, "coupling.lambdaTolerance", tol, pp)
     return case, end, True
 
 
@@ -250,9 +270,10 @@ def main():
     ap.add_argument("--window", type=float, default=0.24)
     ap.add_argument("--jobs", type=int, default=2)
     args = ap.parse_args()
-    dts = sorted(args.dts.split(","), key=float)
+    dts = sorted(args.dts.split(","),
+                 key=lambda r: (float(parse_run(r)[0]), r))
     for dt in dts:
-        steps = args.window / float(dt)
+        steps = args.window / float(parse_run(dt)[0])
         if abs(steps - round(steps)) > 1e-6 * steps:
             raise SystemExit("--window %s is not a whole number of steps of "
                              "%s" % (args.window, dt))
