@@ -3,24 +3,28 @@
 rheology of the sheared Couette suspension, from one common start.
 
 From a written time T of a Couette run (runPoint), the suspension is
-sheared over a short strain window with each time step, the current
-solver settings otherwise.  Over a window this short the trajectories of
-the runs stay close (the suspension has not yet decorrelated), so the
-differences between them are the time-step error itself, not statistics:
-per step, the core relative viscosity, N1/Sigma_xy, N2/Sigma_xy and the
+sheared over a strain window with each time step, the current solver
+settings otherwise.  While the trajectories of the runs stay close (the
+suspension has not decorrelated), the differences between them are the
+time-step error itself, not statistics: per record, the core relative
+viscosity, N1/Sigma_xy, N2/Sigma_xy and the
 contact share of the core stress (from the particles.h5 records) are
 compared with the run of the smallest step, interpolated to the same
 times (rms and max over the window), and the final particle positions too
-(rms and max distance in a1, periodic images taken into account).  The
+(rms and max distance in a1, periodic images taken into account).  Over
+the whole window: the means of eta_core, N1, N2, contact share and
+phi_core with standard errors from 5 block means, their differences from
+the smallest step in units of the combined error, and the Table 4.8
+columns (fdmPost.rheology.mechanical_consistency).  The
 cost per unit strain is the solve time of the Timing lines (core-seconds
 when each run has a core to itself: --jobs no more than the cores).
 
     run.py --snapshot CASE:T [--dts 1e-3,2e-3,4e-3,8e-3] [--window 0.24]
            [--jobs 2]
 
-A run DT+alphaF@TOL changes the lambda step factor (coupling
-alphaLambdaFactor F) and the lambda residual per step (lambdaTolerance
-TOL) as well; the smallest step of the list is the comparison.
+A run DT:SETTING uses a named solver setting (validation/benchmarks/
+solverSettings.py, as frozenCouette: NAME[+PART...][@TOL]) instead of
+layerMean; the first run of the list, by step, is the comparison.
 
 Writes report_windowW.md and timeStep_windowW.png here (cases in
 build/benchmarks/couetteTimeStep).
@@ -44,6 +48,13 @@ from fdmPost.caseRunner import (foam_set, in_case, snapshot_case,  # noqa
                                 timing_lines, work_lock)
 from fdmPost.rheology import (channel_case, core_rheology,  # noqa
                               mechanical_consistency)
+sys.path.insert(0, os.path.dirname(HERE))
+from solverSettings import (apply_setting, case_suffix,  # noqa: E402
+                            check_setting)
+
+# The snapshot's outer iteration with the layer-mean correction (the
+# snapshot may predate it)
+DEFAULT_SETTING = "layerMean"
 
 # Core quantities compared, per particles.h5 record
 QUANTITIES = ("etaCore", "N1/Sigma_xy", "N2/Sigma_xy", "contactShare")
@@ -65,8 +76,14 @@ def record_at(case, time):
                              < 1e-9)
         if not len(hit):
             return None
-        return (np.array(f["position"][hit[-1]]),
-                np.array(f["radius"][hit[-1]]).ravel())
+        return np.array(f["position"][hit[-1]]), np.array(f["radius"])
+
+
+def stopped(case):
+    """The run stopped on a fatal error (too large a step stops on its own
+    checks; run again, it would stop again: delete the case to retry)."""
+    log = os.path.join(case, "log.fdmSuspensionFoam")
+    return os.path.isfile(log) and "FOAM FATAL" in open(log).read()
 
 
 def finished(case, end):
@@ -76,26 +93,23 @@ def finished(case, end):
 
 
 def parse_run(item):
-    """A run DT[+alphaF][@TOL]: gammaDot dt, and optionally the lambda step
-    factor alpha_lambda = F Delta^2/nu and the lambda residual per step."""
-    m = re.fullmatch(r"([^+@]+)(?:\+alpha([^@]+))?(?:@(.+))?", item)
-    if not m:
-        raise SystemExit("run %r is not DT[+alphaF][@TOL]" % item)
-    return m.groups()
+    """A run DT[:SETTING]: gammaDot dt and the solver setting
+    (solverSettings; default layerMean, the tutorial's outer iteration)."""
+    dt, _, setting = item.partition(":")
+    check_setting(setting or DEFAULT_SETTING)
+    return dt, setting
 
 
 def prepare(snapshot, time, item, window, work):
-    dt, alpha, tol = parse_run(item)
-    case = os.path.join(work, "dt_%s%s%s_window%s" % (
-        dt, "_alpha%s" % alpha if alpha else "", "_tol%s" % tol if tol else "",
-        window))
+    dt, setting = parse_run(item)
+    case = os.path.join(work, "dt_%s%s_window%s" % (
+        dt, "_" + case_suffix(setting) if setting else "", window))
     end = "%.12g" % (float(time) + window)
-    if finished(case, end):
+    if finished(case, end) or stopped(case):
         return case, end, False
     shutil.rmtree(case, ignore_errors=True)
     shutil.copytree(snapshot, case)
-    cd, fv, pp = ("system/controlDict", "system/fvSolution",
-                  "constant/particleProperties")
+    cd, pp = "system/controlDict", "constant/particleProperties"
     foam_set(case, "startFrom", "latestTime", cd)
     foam_set(case, "deltaT", dt, cd)
     foam_set(case, "endTime", end, cd)
@@ -105,12 +119,7 @@ def prepare(snapshot, time, item, window, work):
     foam_set(case, "functions", "{}", cd)
     # Positions every step (particles.h5), the end included
     foam_set(case, "output.timeSeriesInterval", 1, pp)
-    # The current solver defaults (the snapshot may predate them)
-    foam_set(case, "SIMPLEC.layerMeanCorrection", "on", fv)
-    if alpha:
-        foam_set(case, "coupling.alphaLambdaFactor", alpha, pp)
-    if tol:
-        foam_set(case, "coupling.lambdaTolerance", tol, pp)
+    apply_setting(case, setting or DEFAULT_SETTING)
     return case, end, True
 
 
@@ -170,6 +179,21 @@ def measure(case, start, end, window):
             "positions": record_at(case, end)}
 
 
+def failure(case):
+    """How a run that failed ended: the time it reached, its outer
+    iterations per step, gaps below the contact floor, particle solves not
+    converged and the first line of its fatal error."""
+    text = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
+    times = re.findall(r"^Time = (\S+)", text, re.M)
+    outer = [int(n) for n in re.findall(r"converged in (\d+) outer", text)]
+    fatal = re.search(r"FOAM FATAL.*?\n\s*(\S.*)", text)
+    return {"time": times[-1] if times else "-",
+            "outerPerStep": np.mean(outer) if outer else np.nan,
+            "belowFloor": len(re.findall(r"below the barrier floor", text)),
+            "notConverged": len(re.findall(r"solve not converged", text)),
+            "error": fatal.group(1).strip() if fatal else "killed"}
+
+
 def compare(run, ref):
     row = {}
     for i, name in enumerate(QUANTITIES):
@@ -186,7 +210,7 @@ def compare(run, ref):
     return row
 
 
-def write_report(results, dts, window, snapshot, time):
+def write_report(results, dts, window, snapshot, time, failures):
     lines = [
         "# Time step against rheology: the sheared Couette suspension",
         "",
@@ -238,6 +262,14 @@ def write_report(results, dts, window, snapshot, time):
         lines.append("| %s | %s | %s |" % (
             dt, " | ".join(cells),
             " | ".join("%.2e" % c for c in results[dt]["consistency"])))
+    if failures:
+        lines += ["", "Runs that stopped before the end of the window:", ""]
+    for dt, f in failures.items():
+        lines.append(
+            "- %s: at time %s, %.1f outer iterations per step, %d gaps below "
+            "the contact floor, %d particle solves not converged; %s" % (
+                dt, f["time"], f["outerPerStep"], f["belowFloor"],
+                f["notConverged"], f["error"]))
     path = os.path.join(HERE, "report_window%g.md" % window)
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -284,7 +316,10 @@ def main():
     prepared = {dt: prepare(snap, time, dt, args.window, work) for dt in dts}
     failed = run_all([c for c, _, todo in prepared.values() if todo],
                      args.jobs)
-    dts = [dt for dt in dts if prepared[dt][0] not in failed]
+    failures = {dt: failure(prepared[dt][0]) for dt in dts
+                if prepared[dt][0] in failed or not
+                finished(*prepared[dt][:2])}
+    dts = [dt for dt in dts if dt not in failures]
     runs = {dt: measure(prepared[dt][0], time, prepared[dt][1], args.window)
             for dt in dts}
     results = {}
@@ -293,7 +328,7 @@ def main():
         results[dt].update((k, runs[dt][k]) for k in (
             "coreSecondsPerStrain", "outerPerStep", "belowFloor", "means",
             "consistency"))
-    write_report(results, dts, args.window, snap, time)
+    write_report(results, dts, args.window, snap, time, failures)
     plot(runs, dts, args.window)
 
 

@@ -96,71 +96,20 @@ from fdmPost.caseRunner import (foam_get, foam_set, run_logged,  # noqa
                                 snapshot_case, timing_lines, work_lock)
 from fdmPost.particleCase import read_list  # noqa: E402
 from fdmPost.rheology import number  # noqa: E402
+sys.path.insert(0, os.path.dirname(HERE))
+from solverSettings import (apply_setting, case_suffix,  # noqa: E402
+                            check_setting)
 
 STATE_KEYS = (("radius", 1), ("velocity", 3), ("angularVelocity", 3),
               ("stresslet", 6), ("contactStresslet", 6))
 
 
-FILES = {"fv": "system/fvSolution", "pp": "constant/particleProperties"}
-# The snapshot's own settings with the layer means left to the outer
-# iteration (the tutorial's until the layer-mean correction)
-PREVIOUS = (("SIMPLEC.layerMeanCorrection", "off", "fv"),)
-REFERENCE = (("SIMPLEC.nOuterCorrectors", 3000, "fv"),
-             ("coupling.lambdaTolerance", 1e-9, "pp"),
-             ("coupling.particleSolveTolerance", 1e-14, "pp"),
-             ("solvers.p.tolerance", 1e-12, "fv"),
-             ("solvers.p.relTol", 0, "fv"),
-             ("solvers.U.tolerance", 1e-12, "fv"),
-             ("solvers.U.relTol", 0, "fv"))
-# Each setting: the dictionary entries it changes from the case's own
-SETTINGS = {
-    "default": PREVIOUS,
-    "thesis": PREVIOUS + (("SIMPLEC.acceleration", "none", "fv"),
-                          ("SIMPLEC.nOuterCorrectors", 3000, "fv")),
-    "thesis10": PREVIOUS + (("SIMPLEC.acceleration", "none", "fv"),
-                            ("SIMPLEC.nOuterCorrectors", 10, "fv"),
-                            ("coupling.lambdaTolerance", 0, "pp")),
-    "layerMean": (("SIMPLEC.layerMeanCorrection", "on", "fv"),
-                  ("SIMPLEC.layerMeanViscosityRatio", 16, "fv")),
-    "layerMeanNCorr1": (("SIMPLEC.layerMeanCorrection", "on", "fv"),
-                        ("SIMPLEC.nCorrectors", 1, "fv")),
-    "layerMeanLoose": (("SIMPLEC.layerMeanCorrection", "on", "fv"),
-                       ("solvers.p.relTol", 0.2, "fv"),
-                       ("solvers.U.relTol", 0.3, "fv")),
-    # The lambda step of eq 2.41, alpha_lambda = f Delta^2/nu (thesis f = 1)
-    "layerMeanAlpha0.25": (("SIMPLEC.layerMeanCorrection", "on", "fv"),
-                           ("coupling.alphaLambdaFactor", 0.25, "pp")),
-    "layerMeanAlpha0.5": (("SIMPLEC.layerMeanCorrection", "on", "fv"),
-                          ("coupling.alphaLambdaFactor", 0.5, "pp")),
-    "layerMeanAlpha2": (("SIMPLEC.layerMeanCorrection", "on", "fv"),
-                        ("coupling.alphaLambdaFactor", 2, "pp")),
-    # Parts to add to a setting with +: NAME+nCorr1
-    "nCorr1": (("SIMPLEC.nCorrectors", 1, "fv"),),
-    "loose": (("solvers.p.relTol", 0.2, "fv"), ("solvers.U.relTol", 0.3, "fv")),
-    "gamgU": PREVIOUS + (("solvers.U", "{solver GAMG; smoother GaussSeidel; "
-                          "tolerance 1e-7; relTol 0.1;}", "fv"),),
-    "relax0.97": PREVIOUS + (("relaxationFactors.equations.U", 0.97, "fv"),),
-    "reference": REFERENCE,
-    # The steady solve of a frozen configuration (what validations do):
-    # the reference's tolerances, old and new outer iteration
-    "steady": PREVIOUS + REFERENCE,
-    "steadyLayerMean": REFERENCE + (("SIMPLEC.layerMeanCorrection", "on",
-                                     "fv"),),
-}
-
-
 def setting_case(snapshot, time, setting, work, steps=1):
     """A copy of the snapshot with the setting's edits that runs `steps`
     steps from T; returns the case and its end time."""
-    name, _, tol = setting.partition("@")
-    parts = name.split("+")
-    for part in parts:
-        if part not in SETTINGS:
-            raise SystemExit("unknown setting %s (known: %s)"
-                             % (part, ", ".join(sorted(SETTINGS))))
+    check_setting(setting)
     case = os.path.join(work, "%s_%s%s" % (
-        os.path.basename(snapshot),
-        setting.replace("@", "_tol").replace("+", "_"),
+        os.path.basename(snapshot), case_suffix(setting),
         "_%dsteps" % steps if steps > 1 else ""))
     dt = float(foam_get(snapshot, "deltaT", "system/controlDict"))
     end = "%.12g" % (float(time) + steps * dt)
@@ -174,10 +123,7 @@ def setting_case(snapshot, time, setting, work, steps=1):
     foam_set(case, "writeControl", "timeStep", "system/controlDict")
     foam_set(case, "writeInterval", 1, "system/controlDict")
     foam_set(case, "functions", "{}", "system/controlDict")
-    for entry, value, where in (e for part in parts for e in SETTINGS[part]):
-        foam_set(case, entry, value, FILES[where])
-    if tol:
-        foam_set(case, "coupling.lambdaTolerance", tol, FILES["pp"])
+    apply_setting(case, setting)
     return case, end
 
 

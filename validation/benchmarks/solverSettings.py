@@ -1,0 +1,88 @@
+"""Named solver settings of the issue-30 benchmarks (frozenCouette,
+couetteTimeStep): the dictionary entries each changes from a case's own.
+
+A setting is NAME, NAME+PART+... (their entries in order) or any of these
+followed by @TOL (the lambda residual per step, coupling lambdaTolerance).
+"""
+
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
+                                "python"))
+from fdmPost.caseRunner import foam_set  # noqa: E402
+
+FILES = {"fv": "system/fvSolution", "pp": "constant/particleProperties"}
+# The inner solves of the Couette tutorial until issue 30 (a snapshot
+# cloned from the tutorial since has looser ones)
+PREVIOUS_SOLVES = (("SIMPLEC.nCorrectors", 2, "fv"),
+                   ("solvers.p.relTol", 0.05, "fv"),
+                   ("solvers.U.relTol", 0.1, "fv"))
+# The tutorial's settings before issue 30: the layer means left to the
+# outer iteration
+PREVIOUS = (("SIMPLEC.layerMeanCorrection", "off", "fv"),) + PREVIOUS_SOLVES
+REFERENCE = (("SIMPLEC.nOuterCorrectors", 3000, "fv"),
+             ("coupling.lambdaTolerance", 1e-9, "pp"),
+             ("coupling.particleSolveTolerance", 1e-14, "pp"),
+             ("solvers.p.tolerance", 1e-12, "fv"),
+             ("solvers.p.relTol", 0, "fv"),
+             ("solvers.U.tolerance", 1e-12, "fv"),
+             ("solvers.U.relTol", 0, "fv"))
+# Each setting: the dictionary entries it changes from the case's own
+SETTINGS = {
+    "default": PREVIOUS,
+    "thesis": PREVIOUS + (("SIMPLEC.acceleration", "none", "fv"),
+                          ("SIMPLEC.nOuterCorrectors", 3000, "fv")),
+    "thesis10": PREVIOUS + (("SIMPLEC.acceleration", "none", "fv"),
+                            ("SIMPLEC.nOuterCorrectors", 10, "fv"),
+                            ("coupling.lambdaTolerance", 0, "pp")),
+    "layerMean": PREVIOUS_SOLVES + (
+        ("SIMPLEC.layerMeanCorrection", "on", "fv"),
+        ("SIMPLEC.layerMeanViscosityRatio", 16, "fv")),
+    # The lambda step of eq 2.41, alpha_lambda = f Delta^2/nu (thesis f = 1)
+    "layerMeanAlpha0.25": PREVIOUS_SOLVES + (
+        ("SIMPLEC.layerMeanCorrection", "on", "fv"),
+        ("coupling.alphaLambdaFactor", 0.25, "pp")),
+    "layerMeanAlpha0.5": PREVIOUS_SOLVES + (
+        ("SIMPLEC.layerMeanCorrection", "on", "fv"),
+        ("coupling.alphaLambdaFactor", 0.5, "pp")),
+    "layerMeanAlpha2": PREVIOUS_SOLVES + (
+        ("SIMPLEC.layerMeanCorrection", "on", "fv"),
+        ("coupling.alphaLambdaFactor", 2, "pp")),
+    # Parts to add to a setting with +: NAME+nCorr1
+    "nCorr1": (("SIMPLEC.nCorrectors", 1, "fv"),),
+    "loose": (("solvers.p.relTol", 0.2, "fv"), ("solvers.U.relTol", 0.3, "fv")),
+    "gamgU": PREVIOUS + (("solvers.U", "{solver GAMG; smoother GaussSeidel; "
+                          "tolerance 1e-7; relTol 0.1;}", "fv"),),
+    "relax0.97": PREVIOUS + (("relaxationFactors.equations.U", 0.97, "fv"),),
+    "reference": REFERENCE,
+    # The steady solve of a frozen configuration (what validations do):
+    # the reference's tolerances, old and new outer iteration
+    "steady": PREVIOUS + REFERENCE,
+    "steadyLayerMean": PREVIOUS_SOLVES + REFERENCE + (
+        ("SIMPLEC.layerMeanCorrection", "on", "fv"),),
+}
+
+
+def check_setting(setting):
+    """Stop on an unknown name in NAME[+PART...][@TOL]."""
+    for part in setting.partition("@")[0].split("+"):
+        if part not in SETTINGS:
+            raise SystemExit("unknown setting %s (known: %s)"
+                             % (part, ", ".join(sorted(SETTINGS))))
+
+
+def case_suffix(setting):
+    """The setting in a case name (no + or @)."""
+    return setting.replace("@", "_tol").replace("+", "_")
+
+
+def apply_setting(case, setting):
+    """Write the setting's entries into the case's dictionaries."""
+    check_setting(setting)
+    name, _, tol = setting.partition("@")
+    for part in name.split("+"):
+        for entry, value, where in SETTINGS[part]:
+            foam_set(case, entry, value, FILES[where])
+    if tol:
+        foam_set(case, "coupling.lambdaTolerance", tol, FILES["pp"])
