@@ -124,9 +124,10 @@ def prepare(snapshot, time, item, window, work):
 
 
 def run_all(cases, jobs):
-    """fdmSuspensionFoam in each case, at most `jobs` at once; the cases
-    whose run failed (a time step too large stops on its own checks)."""
-    waiting, running, failed = list(cases), [], []
+    """fdmSuspensionFoam in each case, at most `jobs` at once (a run that
+    fails is reported, not fatal: too large a step stops on its own
+    checks)."""
+    waiting, running = list(cases), []
     while waiting or running:
         while waiting and len(running) < jobs:
             case = waiting.pop(0)
@@ -140,8 +141,6 @@ def run_all(cases, jobs):
                 running.remove((case, proc))
                 if proc.returncode != 0:
                     print("fdmSuspensionFoam failed in %s" % case)
-                    failed.append(case)
-    return failed
 
 
 def core_series(case):
@@ -314,11 +313,9 @@ def main():
     source, _, time = args.snapshot.rpartition(":")
     snap = snapshot_case(os.path.abspath(source), time, work)
     prepared = {dt: prepare(snap, time, dt, args.window, work) for dt in dts}
-    failed = run_all([c for c, _, todo in prepared.values() if todo],
-                     args.jobs)
-    failures = {dt: failure(prepared[dt][0]) for dt in dts
-                if prepared[dt][0] in failed or not
-                finished(*prepared[dt][:2])}
+    run_all([c for c, _, todo in prepared.values() if todo], args.jobs)
+    failures = {dt: failure(case) for dt, (case, end, _) in prepared.items()
+                if not finished(case, end)}
     dts = [dt for dt in dts if dt not in failures]
     runs = {dt: measure(prepared[dt][0], time, prepared[dt][1], args.window)
             for dt in dts}
