@@ -21,7 +21,9 @@ Per setting and snapshot:
          over the cell volume, thesis eq 2.73): Sigma_xy, N1 = Sigma_xx -
          Sigma_yy and N2 = Sigma_yy - Sigma_zz of the hydrodynamic part
          (stresslet, sub-grid lubrication included) and of the contact part
-         (contactStresslet), each relative to the reference's |Sigma_xy|.
+         (contactStresslet), each relative to the reference's |Sigma_xy|;
+         and the step's own momentum balance, wall force against the
+         particles' lambda (Table 4.8, eq 4.14), next to the reference's.
 
 Settings (NAME, NAME+PART+... for several, or NAME@LAMBDATOL for another
 lambda residual per step):
@@ -100,7 +102,7 @@ PROJECT = os.environ["FDM_PROJECT_DIR"]
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (foam_get, foam_set, run_logged,  # noqa
                                 snapshot_case, timing_lines, work_lock)
-from fdmPost.particleCase import read_list  # noqa: E402
+from fdmPost.particleCase import momentum_balance, read_list  # noqa
 from fdmPost.rheology import number  # noqa: E402
 sys.path.insert(0, os.path.dirname(HERE))
 from solverSettings import (apply_setting, case_suffix,  # noqa: E402
@@ -179,7 +181,19 @@ def solve(case, end):
     residual = re.findall(r"lambda residual (\S+),", text)
     return {"coreSeconds": seconds, "outer": outer,
             "residual": float(residual[-1]) if residual else float("nan"),
-            "state": read_state(case, end)}
+            "state": read_state(case, end),
+            "wallBalance": wall_balance(case, end)}
+
+
+def wall_balance(case, end):
+    """Momentum balance of the step (Table 4.8, eq 4.14): |F^w +
+    F^FDM,parts| per component over |F^w|, the wall force against the
+    particles' lambda; the wall pressure enters it, the particle errors
+    above do not see it."""
+    mb = momentum_balance(case)
+    k = np.argmin(np.abs(mb["time"] - float(end)))
+    wall, parts = mb["wall"][k], mb["lambdaParts"][k]
+    return np.abs(wall + parts) / np.linalg.norm(wall)
 
 
 def stress_parts(state, volume):
@@ -273,6 +287,8 @@ def main():
                     before = "%.12g" % (float(end) - dt)
                     ref = solve(*reference_from(case, before, work))
                 row = errors(run, ref, rate, volume)
+                row.update(wallBalance=run["wallBalance"],
+                           wallBalanceReference=ref["wallBalance"])
                 row.update(snapshot=os.path.basename(snap), setting=setting,
                            coreSeconds=run["coreSeconds"], outer=run["outer"],
                            residual=run["residual"], steps=args.steps)
@@ -291,20 +307,24 @@ def write_report(rows):
         "Errors against the reference solve of the same step (see run.py): "
         "velocities in gammaDot a1 (also with the mean over the particles "
         "removed), angular velocities in gammaDot, stress parts relative to "
-        "the reference |Sigma_xy|.  Core-seconds of the step's solve, serial, "
+        "the reference |Sigma_xy|; the wall balance |F^w + F^FDM,parts| "
+        "over |F^w| (Table 4.8, eq 4.14) of the setting and of its "
+        "reference.  Core-seconds of the step's solve, serial, "
         "on %s (%d cores), %s." % (os.uname().nodename, os.cpu_count(),
                                    date.today().isoformat()),
         "",
         "| snapshot | setting | core-s | outer | lambda residual | U rms | "
         "U max | U - mean rms | U - mean max | Omega rms | Omega max | "
-        "hydro Sxy, N1, N2 | contact Sxy, N1, N2 |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|",
+        "hydro Sxy, N1, N2 | contact Sxy, N1, N2 | wall balance x, y, z "
+        "| the reference's |",
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in rows:
         parts = ["%.1e, %.1e, %.1e" % tuple(r[p]) if p in r else "-"
-                 for p in ("hydro", "contact")]
+                 for p in ("hydro", "contact", "wallBalance",
+                           "wallBalanceReference")]
         lines.append("| %s | %s | %.2f | %d | %.1e | %.1e | %.1e | %.1e | "
-                     "%.1e | %.1e | %.1e | %s | %s |"
+                     "%.1e | %.1e | %.1e | %s | %s | %s | %s |"
                      % (r["snapshot"], r["setting"], r["coreSeconds"],
                         r["outer"], r["residual"], *r["velocity"],
                         *r["relativeVelocity"], *r["angularVelocity"],
