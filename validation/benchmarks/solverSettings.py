@@ -39,16 +39,6 @@ SETTINGS = {
     "layerMean": PREVIOUS_SOLVES + (
         ("SIMPLEC.layerMeanCorrection", "on", "fv"),
         ("SIMPLEC.layerMeanViscosityRatio", 16, "fv")),
-    # The lambda step of eq 2.41, alpha_lambda = f Delta^2/nu (thesis f = 1)
-    "layerMeanAlpha0.25": PREVIOUS_SOLVES + (
-        ("SIMPLEC.layerMeanCorrection", "on", "fv"),
-        ("coupling.alphaLambdaFactor", 0.25, "pp")),
-    "layerMeanAlpha0.5": PREVIOUS_SOLVES + (
-        ("SIMPLEC.layerMeanCorrection", "on", "fv"),
-        ("coupling.alphaLambdaFactor", 0.5, "pp")),
-    "layerMeanAlpha2": PREVIOUS_SOLVES + (
-        ("SIMPLEC.layerMeanCorrection", "on", "fv"),
-        ("coupling.alphaLambdaFactor", 2, "pp")),
     # Parts to add to a setting with +: NAME+nCorr1
     "nCorr1": (("SIMPLEC.nCorrectors", 1, "fv"),),
     "loose": (("solvers.p.relTol", 0.2, "fv"), ("solvers.U.relTol", 0.3, "fv")),
@@ -62,6 +52,12 @@ SETTINGS = {
     "steadyLayerMean": PREVIOUS_SOLVES + REFERENCE + (
         ("SIMPLEC.layerMeanCorrection", "on", "fv"),),
 }
+# The lambda step of eq 2.41, alpha_lambda = F Delta^2/nu (thesis F = 1),
+# with the layer-mean correction: layerMeanAlphaF
+SETTINGS.update(
+    ("layerMeanAlpha%s" % F, SETTINGS["layerMean"]
+     + (("coupling.alphaLambdaFactor", F, "pp"),))
+    for F in ("0.25", "0.5", "2"))
 
 
 def check_setting(setting):

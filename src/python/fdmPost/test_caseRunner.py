@@ -34,10 +34,6 @@ class TimingLinesTest(unittest.TestCase):
         self.assertEqual(timing_lines("Time = 0\nEnd\n"), [])
 
 
-if __name__ == "__main__":
-    unittest.main()
-
-
 class WorkLockTest(unittest.TestCase):
     def test_second_holder_is_refused_until_the_first_ends(self):
         with tempfile.TemporaryDirectory() as work:
@@ -47,3 +43,7 @@ class WorkLockTest(unittest.TestCase):
             self.assertIn("in use by another run", str(stop.exception))
             first.close()   # as when the first process ends
             work_lock(work).close()
+
+
+if __name__ == "__main__":
+    unittest.main()

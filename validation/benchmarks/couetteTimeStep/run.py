@@ -143,35 +143,30 @@ def run_all(cases, jobs):
                     print("fdmSuspensionFoam failed in %s" % case)
 
 
-def core_series(case):
-    """Per record of particles.h5: time and the core eta (eq 2.76, per
-    record), N1, N2 and the contact share of Sigma_xy (eq 4.13); the box."""
-    cs, box, _ = channel_case(case, WALL_LAYER)
-    g, _, hp, c = cs.series()
+def core_series(cs, series):
+    """Per record of particles.h5: the core eta (eq 2.76, per record), N1,
+    N2 and the contact share of Sigma_xy (eq 4.13)."""
+    g, _, hp, c = series
     sxy = cs.eta * g + hp[:, 0, 1] + c[:, 0, 1]
     part = hp + c
-    return cs.t, np.column_stack((
+    return np.column_stack((
         sxy / (cs.eta * g), (part[:, 0, 0] - part[:, 1, 1]) / sxy,
-        (part[:, 1, 1] - part[:, 2, 2]) / sxy, c[:, 0, 1] / sxy)), box
-
-
-def window_means(case, start):
-    """Window means over the whole run with their standard errors (5 block
-    means), and the Table 4.8 columns (rms over x y z)."""
-    cs, _, _ = channel_case(case, WALL_LAYER)
-    r = core_rheology(cs, start)
-    consistency = mechanical_consistency(case, start)
-    return ({k: r[k] for k in MEANS},
-            np.sqrt((consistency ** 2).mean(axis=1)))
+        (part[:, 1, 1] - part[:, 2, 2]) / sxy, c[:, 0, 1] / sxy))
 
 
 def measure(case, start, end, window):
+    """The run's core series, its window means with their standard errors
+    (5 block means), the Table 4.8 columns (rms over x y z), its cost and
+    final positions."""
     text = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
     last = timing_lines(text)[-1]
-    t, values, box = core_series(case)
-    means, consistency = window_means(case, float(start))
-    return {"t": t, "values": values, "box": box, "means": means,
-            "consistency": consistency,
+    cs, box, _ = channel_case(case, WALL_LAYER)
+    series = cs.series()
+    means = core_rheology(cs, float(start), series=series)
+    consistency = mechanical_consistency(case, float(start))
+    return {"t": cs.t, "values": core_series(cs, series), "box": box,
+            "means": {k: means[k] for k in MEANS},
+            "consistency": np.sqrt((consistency ** 2).mean(axis=1)),
             "belowFloor": len(re.findall(r"below the barrier floor", text)),
             "coreSecondsPerStrain": sum(last[3:9]) / window,
             "outerPerStep": last[0] / last[1],
