@@ -82,6 +82,22 @@ particle velocities and by 5.6e-4, 2.3e-4, 5.4e-4 of Sigma_xy in the
 hydrodynamic Sigma_xy, N1, N2: a change of the discrete model as large as
 the errors compared here, so F stays 1.
 
+What limits the outer iteration (tried on the sheared-sphere case test,
+one sphere, Delta = a/5, and on this snapshot at strain 1, then removed):
+not the flow solve (three SIMPLEC sweeps per lambda correction: the same
+outer iterations, 43-45 to 1e-6 with Anderson, a plain tail rate of 0.985
+per iteration either way), not the cell-scale part of the mismatch (its
+non-affine part corrected 2 or 4 times faster: 41 and 59 against 43), not
+lambda left behind by the moving particles (carried with each particle's
+rigid displacement: first residual 1.46e-2 against 1.50e-2).  The slow
+tail is a gradient field: the change of lambda between late iterations is
+99.7 % curl-free for one sphere (radial, balanced by the pressure, so
+that velocities, forces, torques and the deviatoric stresslet barely
+move), 59 % at iteration 8 and 95 % at iteration 30 here.  The first
+residual of a step is the configuration's change (particle velocities
+change by 1-3 % of gammaDot a1 rms per 2e-3 step) and grows with the step
+(median 1.6e-2, 3.0e-2, 9.9e-2 at 2e-3, 4e-3, 8e-3).
+
     run.py --snapshot CASE:T[,T...] [--snapshot ...] [--steps N]
            [--settings default,thesis,thesis10,default@1e-4]
 
