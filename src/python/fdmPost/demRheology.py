@@ -94,11 +94,18 @@ def read_series(case):
         files = series_files(case, "lubricatedDEM", "stress")
     except FileNotFoundError as e:
         raise SystemExit(str(e))
-    with open(files[0]) as f:
+    eta, rate = series_header(files[0])
+    return series_rows(files), eta, rate
+
+
+def series_header(path):
+    """Viscosity and shear rate from the first line of a stress series
+    (lubricatedDEMFoam's stress.dat, or a file in its layout)."""
+    with open(path) as f:
         head = f.readline()
     eta = float(head.split("viscosity")[1].split(",")[0])
     rate = float(head.split("shear rate")[1])
-    return series_rows(files), eta, rate
+    return eta, rate
 
 
 def averages(case, start_strain, blocks=5):
@@ -107,6 +114,11 @@ def averages(case, start_strain, blocks=5):
     lambda_33, the share of
     each part in sigma_xy, phi, contacts per particle pair list."""
     d, eta, rate = read_series(case)
+    return series_averages(d, eta, rate, start_strain, blocks), d, eta, rate
+
+
+def series_averages(d, eta, rate, start_strain, blocks=5):
+    """averages() of the rows d of a stress series."""
     d = d[d[:, 1] >= start_strain]
     if len(d) < blocks:
         raise SystemExit("too few records after strain %g" % start_strain)
@@ -133,4 +145,9 @@ def averages(case, start_strain, blocks=5):
     out["Iv"] = 1 / P
     out["share"] = {n: part_xy[n].mean() / (scale * xy) for n in PARTS}
     out["contacts"] = d[:, 4].mean()
-    return out, d, eta, rate
+    out["interactions"] = d[:, 3].mean()
+    out["contactShare"] = block_mean(
+        (part_xy["normalContact"] + part_xy["shearContact"]) / s["xy"],
+        blocks)
+    out["muBlocks"] = block_mean(s["xy"] / -s["yy"], blocks)
+    return out

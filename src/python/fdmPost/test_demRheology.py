@@ -3,8 +3,10 @@ the spec (seed2 C.3, computed there from eqs 13-16)."""
 
 import unittest
 
+import numpy as np
+
 from fdmPost.demRheology import (model_eta, model_lambda33, model_mu, phi_m,
-                                 viscous_number)
+                                 series_averages, viscous_number)
 
 
 class ThesisModel(unittest.TestCase):
@@ -31,6 +33,30 @@ class ThesisModel(unittest.TestCase):
             self.assertAlmostEqual(viscous_number(phi, 0.63), iv,
                                    delta=1e-12 + 1e-9 * iv)
             self.assertAlmostEqual(model_eta(phi, 0.63) / eta, 1, delta=2e-3)
+
+
+class SeriesAverages(unittest.TestCase):
+    def test_steady_series(self):
+        # Rows of stress.dat: time strain phi interactions contacts s, then
+        # xx yy zz xy per part (NC, SC, NL, SL); viscosity 2, rate 0.5
+        t = np.linspace(0, 2, 41)
+        d = np.zeros((len(t), 22))
+        d[:, 0] = d[:, 1] = t
+        d[:, 2], d[:, 3], d[:, 4] = 0.5, 300, 40
+        parts = ((-6, -5, -4, 3), (0, -1, 0, 1), (-1, -1, -1, 2),
+                 (0, 0, 0, 0.5))
+        for p, (xx, yy, zz, xy) in enumerate(parts):
+            d[:, 6 + 4 * p:10 + 4 * p] = (xx, yy, zz, xy)
+        a = series_averages(d, 2.0, 0.5, 1.0)
+        self.assertEqual(a["records"], 21)
+        self.assertAlmostEqual(a["eta_r"][0], 6.5)  # 6.5/(2 * 0.5)
+        self.assertAlmostEqual(a["eta_r"][1], 0)
+        self.assertAlmostEqual(a["mu"], 6.5 / 7)
+        self.assertAlmostEqual(a["muBlocks"][0], 6.5 / 7)
+        self.assertAlmostEqual(a["contactShare"][0], 4 / 6.5)
+        self.assertAlmostEqual(a["N1"], (-7 + 7) / 6.5)
+        self.assertAlmostEqual(a["N2"], (-7 + 5) / 6.5)
+        self.assertEqual(a["interactions"], 300)
 
 
 if __name__ == "__main__":
