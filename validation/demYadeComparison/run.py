@@ -57,6 +57,7 @@ from fdmPost.caseRunner import foam_set, in_case  # noqa: E402
 from fdmPost.demRheology import (read_series, series_averages,  # noqa: E402
                                  series_header)
 from fdmPost.particleCase import series_rows  # noqa: E402
+from fdmPre.particleList import read_particle_list  # noqa: E402
 
 WORK = os.path.join(PROJECT, "build", "validation", "demYadeComparison")
 PP = "constant/particleProperties"
@@ -185,7 +186,9 @@ def yade_series(path):
 
 
 def compare(name, spec, case):
-    from fdmPre.particleList import read_particle_list
+    """The report row of a case: both series (records every output
+    interval from the first, so aligned by index), early difference, means,
+    cost, result."""
     n = len(read_particle_list(os.path.join(case, "constant",
                                             "particleList"))[2])
     d_p, eta, rate = read_series(case)
@@ -212,8 +215,7 @@ def compare(name, spec, case):
         chaos = (np.abs(self_diff[d_p[:k, 1] <= EARLY_STRAIN]).max()
                  / abs(a_p["eta_r"][0]))
     row = {"name": name, "n": n, "phi": a_p["phi"], "usProject": us_p,
-           "chaos": chaos,
-           "usYade": us_y, "earlyDiff": early_diff,
+           "usYade": us_y, "earlyDiff": early_diff, "chaos": chaos,
            "project": a_p, "yade": a_y, "strain": strain, "diff": diff,
            "xyProject": total_xy(d_p), "xyYade": total_xy(d_y),
            "strainProject": d_p[:, 1], "strainYade": d_y[:, 1],
@@ -228,7 +230,6 @@ def compare(name, spec, case):
         row["pass"] = "measures resolution 2"
     elif not spec.get("check", True):
         row["pass"] = spec.get("label", "cost only")
-
     return row
 
 

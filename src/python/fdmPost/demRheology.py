@@ -118,7 +118,9 @@ def averages(case, start_strain, blocks=5):
 
 
 def series_averages(d, eta, rate, start_strain, blocks=5):
-    """averages() of the rows d of a stress series."""
+    """averages() of the rows d of a stress series; also the mean
+    interaction count and, as (mean, standard error), the contact share of
+    sigma_xy (contactShare) and the record-wise mu (muBlocks)."""
     d = d[d[:, 1] >= start_strain]
     if len(d) < blocks:
         raise SystemExit("too few records after strain %g" % start_strain)
