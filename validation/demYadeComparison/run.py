@@ -22,6 +22,9 @@ Cases (build/validation/demYadeComparison/NAME):
       parameters: monodisperse with 5 % Gaussian polydispersity, roughness
       1e-3 (stiffness 1e7, a third of the step), friction 0.4 and 0.5,
       cut-off 2a, 16 a1 cell, to strain 1.5
+  article3_mu0.4_0.45_halfStep, _smooth, _mono   where the two codes'
+      small separation comes from: half the step, roughness 0 (lubrication
+      only) and equal spheres, to strain 0.5, 0.5 and 0.1
   speed1e3, speed1e4   cost only (validation/benchmarks/demCost): the
       tutorial's parameters at phi 0.4 in 25 and 54 a1 cells (about 10^3
       and 10^4 spheres), 0.1 and 0.04 strain
@@ -98,6 +101,17 @@ CASES["article3_mu0.4_0.45_halfStep"] = dict(
     article3(0.45, 0.4), endTime=0.5, start=0.25, check=False,
     label="half step")
 CASES["article3_mu0.4_0.45_halfStep"]["set"]["deltaT"] = 2e-5 / 3
+# Are contacts opening and closing a step apart the cause?  Smooth spheres
+# (roughness 0: lubrication only), to strain 0.5
+CASES["article3_mu0.4_0.45_smooth"] = dict(
+    article3(0.45, 0.4), endTime=0.5, start=0.25, check=False,
+    label="smooth")
+CASES["article3_mu0.4_0.45_smooth"]["set"]["lubricatedContact.roughness"] = 0
+# Equal spheres (no polydispersity), to strain 0.1: do the codes differ
+# where radii differ?
+CASES["article3_mu0.4_0.45_mono"] = dict(
+    article3(0.45, 0.4), endTime=0.1, start=0.05, check=False,
+    label="monodisperse", pack=["--phi", "0.45", "--ratio", "1"])
 # Cost at about 10^3 and 10^4 spheres (validation/benchmarks/demCost)
 CASES.update(speed1e3=speed(25, 0.1), speed1e4=speed(54, 0.04))
 
