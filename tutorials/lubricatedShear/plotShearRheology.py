@@ -20,7 +20,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from fdmPost.demRheology import (PARTS, averages, model_eta, model_lambda33,  # noqa: E402
-                                 model_mu, phi_m)
+                                 model_mu, phi_m, stress_column)
 
 
 def main():
@@ -54,10 +54,10 @@ def main():
 
     strain = d[:, 1]
     fig, ax = plt.subplots(1, 2, figsize=(11, 4))
-    for p, n in enumerate(PARTS):
-        ax[0].plot(strain, d[:, 9 + 4 * p] / (eta * abs(rate)), lw=0.6,
-                   label=n)
-    total = sum(d[:, 9 + 4 * p] for p in range(4)) / (eta * abs(rate))
+    for n in PARTS:
+        ax[0].plot(strain, stress_column(d, n, "xy") / (eta * abs(rate)),
+                   lw=0.6, label=n)
+    total = sum(stress_column(d, n, "xy") for n in PARTS) / (eta * abs(rate))
     ax[0].plot(strain, total, "k", lw=0.8, label="total")
     ax[0].axhline(model_eta(phi, phim), color="r", ls="--",
                   label="model eq 16")

@@ -16,6 +16,7 @@ import time
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
 from fdmPost.caseRunner import foam_get  # noqa: E402
+from fdmPost.demRheology import PARTS  # noqa: E402
 from fdmPre.particleList import read_particle_list  # noqa: E402
 
 case, out, resolution = sys.argv[1], sys.argv[2], int(sys.argv[3])
@@ -91,8 +92,6 @@ O.engines = [
 O.cell.velGrad = Matrix3(0, rate, 0, 0, 0, 0, 0, 0, 0)
 O.dt = dt
 
-PARTS = ("normalContact", "shearContact", "normalLubrication",
-         "shearLubrication")
 solid = sum(4 / 3 * pi * ri ** 3 for ri in r)
 f = open(out, "w")
 f.write("# YADE %s, Law2_ScGeom_ImplicitLubricationPhys resolution %d, "

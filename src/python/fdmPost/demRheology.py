@@ -98,6 +98,16 @@ def read_series(case):
     return series_rows(files), eta, rate
 
 
+COMPONENTS = ("xx", "yy", "zz", "xy")
+
+
+def stress_column(d, part, component):
+    """One stress component of one part (PARTS) from the rows d of a stress
+    series: after time strain phi interactions contacts stabilityNumber,
+    xx yy zz xy per part."""
+    return d[:, 6 + 4 * PARTS.index(part) + COMPONENTS.index(component)]
+
+
 def series_header(path):
     """Viscosity and shear rate from the first line of a stress series
     (lubricatedDEMFoam's stress.dat, or a file in its layout)."""
@@ -124,13 +134,8 @@ def series_averages(d, eta, rate, start_strain, blocks=5):
     d = d[d[:, 1] >= start_strain]
     if len(d) < blocks:
         raise SystemExit("too few records after strain %g" % start_strain)
-    s = {c: np.zeros(len(d)) for c in ("xx", "yy", "zz", "xy")}
-    part_xy = {}
-    for p, name in enumerate(PARTS):
-        cols = 6 + 4 * p
-        for k, c in enumerate(("xx", "yy", "zz", "xy")):
-            s[c] += d[:, cols + k]
-        part_xy[name] = d[:, cols + 3]
+    s = {c: sum(stress_column(d, n, c) for n in PARTS) for c in COMPONENTS}
+    part_xy = {n: stress_column(d, n, "xy") for n in PARTS}
     scale = eta * abs(rate)
     out = {"phi": d[0, 2], "records": len(d),
            "strain": (d[0, 1], d[-1, 1])}
