@@ -98,6 +98,20 @@ residual of a step is the configuration's change (particle velocities
 change by 1-3 % of gammaDot a1 rms per 2e-3 step) and grows with the step
 (median 1.6e-2, 3.0e-2, 9.9e-2 at 2e-3, 4e-3, 8e-3).
 
+The rigid-body constraint made implicit in the momentum matrix (tried,
+then removed): K (U - U_prev) on the particles' cells, K = f nu/Delta^2,
+its force moved into lambda after each sweep so that it vanishes at the
+fixed point.  For the pushed sphere (one sphere, Anderson) the particle
+velocity error after 10, 20, 40 outer iterations was 0.42, 0.19, 3.5e-3
+at f = 0 and 0.42, 0.20, 4.0e-3 at f = 10: no faster.  And it moved the
+converged solution by 1.2e-4, 8.0e-4, 2.6e-3 gammaDot a at f = 1, 10,
+100: the Rhie-Chow face flux carries rAtU, which K changes inside the
+particles.  On this snapshot (strain 1, one step) f = 10 stopped at the
+lambda residual in 18 outer iterations against 78, but 1.7e-2 gammaDot a1
+rms from the reference at any residual.  A drag estimate 6 pi nu a (times
+c) on the diagonal of the particle system, balanced by its value at the
+last iterate, was slower at c = 0.5, 2 and -0.3 and diverged at c = -1.
+
     run.py --snapshot CASE:T[,T...] [--snapshot ...] [--steps N]
            [--settings default,thesis,thesis10,default@1e-4]
 
