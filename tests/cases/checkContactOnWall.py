@@ -35,6 +35,20 @@ def record(path, time):
         return {name: f[name][k] for name in f if name not in ("radius", "group")}
 
 
+def step_summaries(log):
+    """The -quiet log: its step summary lines as dicts, and whether any
+    per-iteration line (linear solver, outer iteration, contacts, sub-grid)
+    was left in it."""
+    steps, chatty = [], False
+    for line in open(log):
+        if line.startswith("Step "):
+            words = line.replace("Time =", "time").split()
+            steps.append(dict(zip(words[2::2], words[3::2])))
+        chatty |= any(s in line for s in ("Solving for", "outer iteration",
+                                          "Contacts:", "particle-wall gaps"))
+    return steps, chatty
+
+
 def main(work):
     s = last(f"{work}/straight/postProcessing/particles.h5")
     r = last(f"{work}/restart/postProcessing/particles.h5")
@@ -85,6 +99,16 @@ def main(work):
     for key in ("force", "contactForce", "contactTorque", "contactStresslet"):
         c.check(f"restart: record at t = 1, max |d {key}| / W",
                 np.abs(r1[key] - s1[key]).max() / W, 1e-9)
+    # -quiet: one line per step (1 to 2 by 0.05), its contacts and smallest
+    # gap (over a = 1; printed to 3 digits) those of the particles' file
+    steps, chatty = step_summaries(f"{work}/restart/log.fdmSuspensionFoam")
+    c.check("quiet: |number of step lines - 20|", abs(len(steps) - 20), 0)
+    c.check("quiet: per-iteration lines left (0/1)", int(chatty), 0)
+    c.check("quiet: |last step time - 2|", abs(float(steps[-1]["time"]) - 2), 1e-9)
+    c.check("quiet: max |contacts - 3|",
+            max(abs(int(st["contacts"]) - 3) for st in steps), 0)
+    c.check("quiet: |smallest gap / min(y - a) - 1|",
+            abs(float(steps[-1]["smallestGap"]) / gap.min() - 1), 5e-3)
     c.check("2 ranks: max |dU| / max |U|",
             np.abs(par["velocity"] - s["velocity"]).max() / np.abs(s["velocity"]).max(), 1e-5)
     c.check("2 ranks: max |dF_c| / W", np.abs(par["contactForce"] - Fc).max() / W, 1e-5)

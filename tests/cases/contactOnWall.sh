@@ -8,7 +8,8 @@
 # sliding at mu F_el above the Coulomb limit, a restart from t = 1 (slip
 # history in particleState) reaching the same state and repeating the
 # interrupted run's record at t = 1 (contact loads of the solved state,
-# implicit share included), a restart without its particleState stopping
+# implicit share included; run with -quiet: one summary line per step
+# whose contacts and smallest gap match the particles' file), a restart without its particleState stopping
 # with a message, and the same run on 2
 # MPI ranks cut through the middle sphere matching the serial one.
 source "${0%/*}/caseTestFunctions"
@@ -25,7 +26,7 @@ cloneCase contactOnWall "$work/straight"
     rm -rf 1/uniform
     foamDictionary -entry startFrom -set latestTime system/controlDict \
         > /dev/null
-    runLogged fdmSuspensionFoam
+    runLogged fdmSuspensionFoam -quiet
     # The same restart without the particle state, asked for explicitly
     # (startTime 1), must stop, not go on from the initial positions; with
     # latestTime the time is incomplete: set aside, the run starts at 0

@@ -26,8 +26,12 @@ Description
     same configuration.  Without particles lambda stays zero and the solver
     is a plain Stokes solver.
 
+    Each time step ends with one summary line (Step N  Time = t  strain
+    outer lambdaResidual contacts smallestGap stepTime timeLeft); -quiet
+    leaves only these lines, the set-up and the warnings.
+
 Usage
-    fdmSuspensionFoam [-parallel] [-case dir]
+    fdmSuspensionFoam [-parallel] [-case dir] [-quiet]
 
 \*---------------------------------------------------------------------------*/
 
@@ -45,6 +49,9 @@ Usage
 #include "checkTimeControls.H"
 #include "incompleteWrites.H"
 #include "layerMeanCorrection.H"
+#include "planeWalls.H"
+#include <iomanip>
+#include <sstream>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -54,6 +61,13 @@ int main(int argc, char *argv[])
     (
         "Stokes-flow solver for particle-resolved suspensions"
         " (Fictitious Domain Method, SIMPLEC)"
+    );
+
+    argList::addBoolOption
+    (
+        "quiet",
+        "One summary line per time step: no linear-solver, outer-iteration,"
+        " contact or timing lines (warnings and errors stay)"
     );
 
     #include "postProcess.H"
@@ -71,6 +85,20 @@ int main(int argc, char *argv[])
     // at the first runTime.loop(), after the initial solve; loop() keeps
     // them (functionObjectList::read re-reads only changed dictionaries)
     runTime.functionObjects().start();
+
+    // -quiet: what is left is the set-up, warnings and the step summaries
+    const bool quiet = args.found("quiet");
+    if (quiet)
+    {
+        SolverPerformance<scalar>::debug = 0;
+        SolverPerformance<vector>::debug = 0;
+        outerLoop.setVerbose(false);
+        particles.setVerbose(false);
+    }
+    // The strain of the summary line: shear rate between two moving walls
+    const scalar shearRate =
+        planeWalls(mesh, "step summary", false).shearRate();
+    clockTime runClock;
 
     momentumBalance balance(mesh);
     clockTime flowClock;
@@ -91,16 +119,24 @@ int main(int argc, char *argv[])
     particles.writeTimeSeries();
 
     Info<< "\nStarting time loop\n" << endl;
+    const scalar clockAtLoopStart = runClock.elapsedTime();
+    scalar clockAtLastStep = clockAtLoopStart;
 
     while (runTime.loop())
     {
-        Info<< "Time = " << runTime.timeName() << nl << endl;
+        if (!quiet)
+        {
+            Info<< "Time = " << runTime.timeName() << nl << endl;
+        }
 
         particles.move(runTime.deltaTValue(), lambda);
 
         #include "stokesSolve.H"
 
-        #include "continuityErrs.H"
+        if (!quiet)
+        {
+            #include "continuityErrs.H"
+        }
 
         clockTime outputClock;
         runTime.write();

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
+#include "pairSearch.H"
 #include "cyclicPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
 #include "constants.H"
@@ -206,6 +207,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     solved_(false),
     hasHistory_(false),
     firstSolveDone_(false),
+    verbose_(true),
     timeSeriesInterval_(1),
     system_(0),
     lambdaPartsSum_(Zero),
@@ -317,6 +319,23 @@ Foam::fdmParticleCloud::fdmParticleCloud
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::label Foam::fdmParticleCloud::nContacts() const
+{
+    return contacts_ ? contacts_->nContacts() : 0;
+}
+
+
+Foam::scalar Foam::fdmParticleCloud::smallestGap() const
+{
+    if (empty())
+    {
+        return 2;
+    }
+    const scalar a1 = min(radius_);
+    return fdm::smallestSurfaceGap(box_, position_, radius_, 2*a1)/a1;
+}
+
 
 Foam::scalar Foam::fdmParticleCloud::lambdaTolerance() const
 {

@@ -130,13 +130,20 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
 
     buildStencils();
     subGrid_->update(position_, radius_, box_);
+    if (verbose_)
+    {
+        subGrid_->report();
+    }
     if (contacts_)
     {
         contacts_->update
         (
             position_, radius_, box_, mesh_.time().deltaTValue()
         );
-        contacts_->report();
+        if (verbose_)
+        {
+            contacts_->report();
+        }
         // Explicit loads for the coming solve; a solved state read at a
         // restart keeps the loads it was written with
         if (!solved_)

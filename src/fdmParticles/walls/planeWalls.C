@@ -9,9 +9,15 @@
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::planeWalls::planeWalls(const fvMesh& mesh, const string& user)
+Foam::planeWalls::planeWalls
+(
+    const fvMesh& mesh,
+    const string& user,
+    const bool planeOnly
+)
 :
-    mesh_(mesh)
+    mesh_(mesh),
+    nOther_(0)
 {
     DynamicList<wall> walls;
     for (const polyPatch& pp : mesh.boundaryMesh())
@@ -28,7 +34,14 @@ Foam::planeWalls::planeWalls(const fvMesh& mesh, const string& user)
         const scalar bend = gMax(mag(nf - n));
         const point origin = gSum(pp.faceCentres())/nFaces;
         const scalar offPlane = gMax(mag((pp.faceCentres() - origin) & n));
-        if (bend > 1e-6 || offPlane > 1e-6*cbrt(gSum(mesh.V())))
+        const bool plane =
+            bend <= 1e-6 && offPlane <= 1e-6*cbrt(gSum(mesh.V()));
+        if (!plane && !planeOnly)
+        {
+            ++nOther_;
+            continue;
+        }
+        if (!plane)
         {
             FatalErrorInFunction
                 << "Wall patch " << pp.name() << " is not a plane: the "
@@ -49,6 +62,17 @@ Foam::vector Foam::planeWalls::velocity(const wall& w) const
     const scalarField& magSf = mesh_.boundary()[w.patch].magSf();
     const vectorField& Ub = U.boundaryField()[w.patch];
     return gSum(Ub*magSf)/gSum(magSf);
+}
+
+
+Foam::scalar Foam::planeWalls::shearRate() const
+{
+    if (walls_.size() != 2 || nOther_ > 0)
+    {
+        return 0;
+    }
+    const scalar gap = mag(walls_[1].distance(walls_[0].origin));
+    return mag(velocity(walls_[0]) - velocity(walls_[1]))/max(gap, VSMALL);
 }
 
 

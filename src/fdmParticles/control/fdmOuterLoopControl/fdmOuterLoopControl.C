@@ -129,6 +129,7 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
     lambdaResidual_(GREAT),
     lambdaTolerance_(0),
     particleIterations_(0),
+    verbose_(true),
     smallestMeasure_(GREAT),
     velocityScale_(0)
 {
@@ -259,7 +260,7 @@ bool Foam::fdmOuterLoopControl::converged() const
 
 bool Foam::fdmOuterLoopControl::loop()
 {
-    if (iteration_ > 0)
+    if (iteration_ > 0 && verbose_)
     {
         Info<< algorithmName_ << ": outer iteration " << iteration_;
         if (hasLambda_)
@@ -274,16 +275,22 @@ bool Foam::fdmOuterLoopControl::loop()
 
     if (iteration_ > 0 && converged())
     {
-        Info<< algorithmName_ << ": converged in " << iteration_
-            << " outer iterations" << nl << endl;
+        if (verbose_)
+        {
+            Info<< algorithmName_ << ": converged in " << iteration_
+                << " outer iterations" << nl << endl;
+        }
         return false;
     }
 
     const scalar tolerance = hasLambda_ ? lambdaTolerance_ : outerTolerance_;
     if (iteration_ >= nOuterCorrectors_ && tolerance == 0)
     {
-        Info<< algorithmName_ << ": fixed count of " << iteration_
-            << " outer iterations done" << nl << endl;
+        if (verbose_)
+        {
+            Info<< algorithmName_ << ": fixed count of " << iteration_
+                << " outer iterations done" << nl << endl;
+        }
         return false;
     }
     if (iteration_ >= nOuterCorrectors_)

@@ -150,4 +150,38 @@ void Foam::fdm::findNearPairs
 }
 
 
+Foam::scalar Foam::fdm::smallestSurfaceGap
+(
+    const periodicBox& box,
+    const UList<point>& positions,
+    const UList<scalar>& radii,
+    const scalar cutoff
+)
+{
+    scalar smallest = cutoff;
+    DynamicList<labelPair> pairs;
+    findNearPairs(box, positions, radii, cutoff, pairs);
+    for (const labelPair& p : pairs)
+    {
+        const label i = p.first();
+        const label j = p.second();
+        const vector d = box.minimumImage(positions[j] - positions[i]);
+        smallest = min(smallest, mag(d) - radii[i] - radii[j]);
+    }
+    forAll(positions, i)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (!box.periodic(d))
+            {
+                const scalar x = positions[i][d] - box.min()[d];
+                smallest = min(smallest, x - radii[i]);
+                smallest = min(smallest, box.span()[d] - x - radii[i]);
+            }
+        }
+    }
+    return smallest;
+}
+
+
 // ************************************************************************* //

@@ -251,7 +251,11 @@ void Foam::frameInvariantSubGrid::update
     {
         updateWallGaps(positions, radii);
     }
+}
 
+
+void Foam::frameInvariantSubGrid::report() const
+{
     Info<< "Sub-grid lubrication: " << nPairs() << " pairs, " << nWallGaps()
         << " particle-wall gaps" << endl;
 }

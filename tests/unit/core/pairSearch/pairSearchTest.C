@@ -1,4 +1,5 @@
-// Unit tests for Foam::fdm::findNearPairs (cell-linked list)
+// Unit tests for Foam::fdm::findNearPairs (cell-linked list) and
+// Foam::fdm::smallestSurfaceGap
 
 #include "pairSearch.H"
 
@@ -91,4 +92,27 @@ TEST(pairSearch, matchesBruteForceAcrossLeesEdwardsFaces)
         box.setShearOffset(offset);
         compareWithBruteForce(box, 400, 3);
     }
+}
+
+
+TEST(pairSearch, smallestSurfaceGapAcrossAPeriodicFaceAndToAWall)
+{
+    // Channel: walls at y = -10 and 10, periodic in x and z (span 20)
+    const fdm::periodicBox box(point(0, -10, 0), point(20, 10, 20),
+        FixedList<bool, 3>({true, false, true}));
+    // Pair through the x face: centres 0.5 and 19.2 are 1.3 apart,
+    // gap 1.3 - 1 - 0.25 = 0.05; the second sphere 0.2 from the top wall
+    List<point> x({point(0.5, 0, 5), point(19.2, 0, 5), point(10, 8.8, 10)});
+    List<scalar> a({1, 0.25, 1});
+    EXPECT_NEAR(fdm::smallestSurfaceGap(box, x, a, 1), 0.05, 1e-12);
+
+    x[2].y() = 8.96;
+    EXPECT_NEAR(fdm::smallestSurfaceGap(box, x, a, 1), 0.04, 1e-12);
+
+    // Overlap is negative; nothing within the cut-off gives the cut-off
+    x[1].x() = 19.6;
+    EXPECT_NEAR(fdm::smallestSurfaceGap(box, x, a, 1), -0.35, 1e-12);
+    const List<point> far({point(5, 0, 5), point(15, 0, 15)});
+    const List<scalar> unit({1, 1});
+    EXPECT_EQ(fdm::smallestSurfaceGap(box, far, unit, 0.5), 0.5);
 }
