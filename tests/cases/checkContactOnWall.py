@@ -6,6 +6,7 @@ import h5py
 import numpy as np
 
 from fdmPost.checks import Checks
+from fdmPost.foamCloud import check_case
 
 # Case data: a = 1, eta = 1, h_r = 5e-3, mu = 0.5, k_n from
 # 6 pi eta gammaDot a^2 = k_n (0.2 h_r)^1.5, gapFloor 1e-5
@@ -109,6 +110,12 @@ def main(work):
             max(abs(int(st["contacts"]) - 3) for st in steps), 0)
     c.check("quiet: |smallest gap / min(y - a) - 1|",
             abs(float(steps[-1]["smallestGap"]) / gap.min() - 1), 5e-3)
+    # The .foam reader shows every written time's particles (0, 1, 2)
+    # with their fields, equal to the particleState
+    c.check("foam reader, serial: times failing",
+            check_case(f"{work}/straight/case.foam"), 0)
+    c.check("foam reader, 2 ranks decomposed: times failing",
+            check_case(f"{work}/parallel/case.foam", decomposed=True), 0)
     c.check("2 ranks: max |dU| / max |U|",
             np.abs(par["velocity"] - s["velocity"]).max() / np.abs(s["velocity"]).max(), 1e-5)
     c.check("2 ranks: max |dF_c| / W", np.abs(par["contactForce"] - Fc).max() / W, 1e-5)

@@ -11,7 +11,9 @@
 # implicit share included; run with -quiet: one summary line per step
 # whose contacts and smallest gap match the particles' file), a restart without its particleState stopping
 # with a message, and the same run on 2
-# MPI ranks cut through the middle sphere matching the serial one.
+# MPI ranks cut through the middle sphere matching the serial one; the
+# particles through ParaView's .foam reader at every written time (serial
+# and decomposed, fdmPost.foamCloud).
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir contactOnWall)
@@ -55,4 +57,7 @@ cloneCase contactOnWall "$work/parallel"
     runLogged blockMesh && runLogged decomposePar && runParallel2 fdmSuspensionFoam
 ) || exit 1
 
+# ParaView's .foam reader (vtkPOpenFOAMReader) on the serial and the
+# decomposed run: the particles with their fields at every written time
+touch "$work/straight/case.foam" "$work/parallel/case.foam"
 "$FDM_PYTHON" "$caseTemplates/checkContactOnWall.py" "$work"

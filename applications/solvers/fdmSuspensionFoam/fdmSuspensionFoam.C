@@ -114,6 +114,8 @@ int main(int argc, char *argv[])
         Info<< "Solving at the initial particle positions, time = "
             << runTime.timeName() << nl << endl;
         #include "stokesSolve.H"
+        // The start time shows the particles too (paraFoam, .foam)
+        particles.writeLagrangian();
     }
     // State at the start time: solved above or read from a restart
     particles.writeTimeSeries();
@@ -143,6 +145,7 @@ int main(int argc, char *argv[])
         particles.writeTimeSeries();
         if (runTime.writeTime())
         {
+            particles.writeLagrangian();
             particles.writeState();
             particles.writeVTK();
         }

@@ -8,6 +8,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
+#include "lagrangianCloudWriter.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "IOobject.H"
@@ -153,6 +154,34 @@ void Foam::fdmParticleCloud::writeTimeSeries()
         // Publish the records up to this write time
         timeSeries_->commit();
     }
+}
+
+
+void Foam::fdmParticleCloud::writeLagrangian() const
+{
+    if (empty())
+    {
+        return;
+    }
+    checkFinite();
+
+    const lagrangianCloudWriter cloud(mesh_, "particles", position_);
+    labelList id(size());
+    forAll(id, p)
+    {
+        id[p] = p;
+    }
+    cloud.write("id", id);
+    cloud.write("group", group_);
+    cloud.write("d", scalarField(2*radius_));
+    cloud.write("U", U_);
+    cloud.write("omega", Omega_);
+    cloud.write("force", force_);
+    cloud.write("torque", torque_);
+    cloud.write("stresslet", stresslet_);
+    cloud.write("contactForce", contactForce_);
+    cloud.write("contactTorque", contactTorque_);
+    cloud.write("contactStresslet", contactStresslet_);
 }
 
 

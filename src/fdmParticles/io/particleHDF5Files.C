@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleHDF5Files.H"
+#include <algorithm>
 #include "error.H"
 
 #include <hdf5.h>
@@ -246,7 +247,9 @@ bool Foam::particleHDF5Files::readTimes
     }
     const std::vector<double> t = readAll(f, "time");
     H5Fclose(f);
-    times = scalarList(t.begin(), t.end());
+    // Element-wise: List lost its iterator-range constructor in v2312
+    times.resize(label(t.size()));
+    std::copy(t.begin(), t.end(), times.begin());
     return true;
 }
 
