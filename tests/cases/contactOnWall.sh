@@ -13,7 +13,8 @@
 # with a message, and the same run on 2
 # MPI ranks cut through the middle sphere matching the serial one; the
 # particles through ParaView's .foam reader at every written time (serial
-# and decomposed, fdmPost.foamCloud).
+# and decomposed, fdmPost.foamCloud); the VTK series with the contact
+# network and particles.h5's attributes (fdmPost.particleFiles).
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir contactOnWall)
@@ -60,4 +61,18 @@ cloneCase contactOnWall "$work/parallel"
 # ParaView's .foam reader (vtkPOpenFOAMReader) on the serial and the
 # decomposed run: the particles with their fields at every written time
 touch "$work/straight/case.foam" "$work/parallel/case.foam"
-"$FDM_PYTHON" "$caseTemplates/checkContactOnWall.py" "$work"
+"$FDM_PYTHON" "$caseTemplates/checkContactOnWall.py" "$work" || exit 1
+
+# The VTK series (from t = 0, each particle once, the contact lines adding
+# up to each particle's contact force) and the self-describing particles.h5
+# with its XDMF companion, serial and decomposed (fdmPost.particleFiles)
+for run in straight parallel
+do
+    echo "   $run run, VTK and HDF5 files:"
+    out=$("$FDM_PYTHON" -m fdmPost.particleFiles "$work/$run" \
+        --contact-balance); rc=$?
+    echo "$out" | sed 's/^/   /'
+    [ $rc -eq 0 ] || exit 1
+    [ -f "$work/$run/VTK/particles_0.vtp" ] \
+        || { echo "FAILED: no VTK file at t = 0"; exit 1; }
+done

@@ -45,7 +45,7 @@ sed -i 's/^deltaT .*/deltaT 0.01;/' "$work/badDeltaT/system/controlDict"
 expectStop "$work/badDeltaT" lubricatedDEMFoam \
     "deltaT 0.01 in system/controlDict is above the critical step" || exit 1
 
-"$FDM_PYTHON" - "$work" <<'PY'
+"$FDM_PYTHON" - "$work" <<'PY' || exit 1
 import glob, os, re, sys
 import numpy as np
 from fdmPost.particleCase import read_list
@@ -109,3 +109,12 @@ print("   tracks.dat: %d rows, last row against particleState %.1e"
 ok &= len(tracks) == len(d) and err < 1e-9 * np.abs(x).max()
 sys.exit(0 if ok else 1)
 PY
+
+# ParaView files of the DEM: the VTK series from t = 0, each particle once
+# at its particleState position, the interactions as lines
+echo "   VTK files:"
+out=$("$FDM_PYTHON" -m fdmPost.particleFiles "$work/straight" --no-hdf5); rc=$?
+echo "$out" | sed 's/^/   /'
+[ $rc -eq 0 ] && [ -f "$work/straight/VTK/particles_0.vtp" ] \
+    && grep -q "contact lines" <<< "$out" \
+    && ! grep -q " 0 contact lines" <<< "$(echo "$out" | tail -n 1)"

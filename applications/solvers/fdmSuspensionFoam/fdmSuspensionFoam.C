@@ -119,6 +119,7 @@ int main(int argc, char *argv[])
     }
     // State at the start time: solved above or read from a restart
     particles.writeTimeSeries();
+    particles.writeVTK();
 
     Info<< "\nStarting time loop\n" << endl;
     const scalar clockAtLoopStart = runClock.elapsedTime();
@@ -143,11 +144,11 @@ int main(int argc, char *argv[])
         clockTime outputClock;
         runTime.write();
         particles.writeTimeSeries();
+        particles.writeVTK();
         if (runTime.writeTime())
         {
             particles.writeLagrangian();
             particles.writeState();
-            particles.writeVTK();
         }
         outputSeconds += outputClock.elapsedTime();
 

@@ -58,6 +58,8 @@ Description
         interval    100;            // steps between time-series rows
         track       (0 1);          // optional: write these particles'
                                     // positions to tracks.dat
+        vtkInterval 0;              // optional: VTK files every n steps
+                                    // (0: at the write times)
     }
     \endverbatim
 
@@ -67,6 +69,10 @@ Description
     with output{track}, tracks.dat: time and the positions of those
     particles.  <time>/particleState also holds each particle's stresslets
     of the four parts (stresslet_<part>), for local stress profiles.
+    VTK/particles_<time>.vtp and contacts_<time>.vtp with their .series
+    files open in ParaView (fdm::particleVTKWriter): the particles from the
+    start time on (in the lab frame), and every interaction of the last
+    step as a line (none at the start time, before the first step).
 
 \*---------------------------------------------------------------------------*/
 
@@ -88,6 +94,7 @@ Description
 #include "fpTrapsOff.H"
 #include "incompleteWrites.H"
 #include "isFinite.H"
+#include "particleVTKWriter.H"
 
 using namespace Foam;
 
@@ -144,6 +151,8 @@ int main(int argc, char *argv[])
     );
     demTracks tracks(runTime, dem, output);
     demSeries series(runTime, dem);
+    demVTK vtk(runTime, output);
+    vtk.write(dem, runTime, 0);
 
     Info<< nl << "Starting time loop" << nl << endl;
 
@@ -177,6 +186,7 @@ int main(int argc, char *argv[])
             sMax = 0;
         }
 
+        vtk.write(dem, runTime, stepCount);
         if (runTime.writeTime())
         {
             writeState(dem, runTime);

@@ -4,6 +4,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
+#include "readBounded.H"
+#include "particleVTKWriter.H"
 #include "pairSearch.H"
 #include "cyclicPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
@@ -209,6 +211,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     firstSolveDone_(false),
     verbose_(true),
     timeSeriesInterval_(1),
+    vtkInterval_(0),
     system_(0),
     lambdaPartsSum_(Zero),
     timings_{0, 0, 0, 0},
@@ -297,7 +300,18 @@ Foam::fdmParticleCloud::fdmParticleCloud
     );
 
     const dictionary output(dict_.subOrEmptyDict("output"));
-    fdm::checkKeywords(output, {"timeSeriesInterval"}, "output block");
+    fdm::checkKeywords
+    (
+        output, {"timeSeriesInterval", "vtkInterval"}, "output block"
+    );
+    vtkInterval_ = label
+    (
+        fdm::readBoundedOrDefault
+        (
+            output, "vtkInterval", 0, 0, labelMax,
+            "steps between VTK files (0: at the write times)"
+        )
+    );
     timeSeriesInterval_ = output.getOrDefault<label>("timeSeriesInterval", 1);
     if (timeSeriesInterval_ < 1)
     {

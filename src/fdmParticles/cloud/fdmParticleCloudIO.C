@@ -3,16 +3,26 @@
   License: GPL-3.0-or-later (see LICENSE)
 
 Description
-    Particle state for restarts and VTK output for ParaView.
+    Particle state for restarts, the HDF5 time series, the lagrangian
+    cloud and the VTK series for ParaView.
 
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
 #include "lagrangianCloudWriter.H"
+#include "particleVTKWriter.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "IOobject.H"
 #include "isFinite.H"
+#include "planeWalls.H"
+#include "StringStream.H"
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::fdmParticleCloud::~fdmParticleCloud()
+{}
+
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
@@ -114,6 +124,55 @@ void Foam::fdmParticleCloud::writeState() const
 }
 
 
+Foam::particleHDF5Metadata::description
+Foam::fdmParticleCloud::hdf5Description() const
+{
+    particleHDF5Metadata::description d;
+    std::string groups;
+    for (const particleGroup& g : groups_)
+    {
+        groups += g.name() + "\n";
+    }
+    dictionary parameters(dict_);
+    parameters.remove("particles");
+    OStringStream entries;
+    parameters.write(entries, false);
+    d.text =
+    {
+        {"solver", "fdmSuspensionFoam (libfdmParticles)"},
+        {"openfoamApi", std::to_string(OPENFOAM)},
+        {"case", mesh_.time().globalPath()},
+        {"groupNames", groups},
+        {"particleProperties", entries.str()}
+    };
+
+    const boundBox& bb = mesh_.bounds();
+    auto numbers = [](const vector& v)
+    {
+        return std::vector<double>{v.x(), v.y(), v.z()};
+    };
+    d.numbers =
+    {
+        {"fluidDensity", {rhoFluid_}},
+        {"viscosity", {rhoFluid_*nu_}},
+        {"kinematicViscosity", {nu_}},
+        {"shearRate", {planeWalls(mesh_, "HDF5 description", false).shearRate()}},
+        {"boxMin", numbers(bb.min())},
+        {"boxMax", numbers(bb.max())},
+        {
+            "periodic",
+            {
+                double(box_.periodic(0)), double(box_.periodic(1)),
+                double(box_.periodic(2))
+            }
+        },
+        {"gravity", numbers(gravity_)},
+        {"meshSpacing", {delta_}}
+    };
+    return d;
+}
+
+
 void Foam::fdmParticleCloud::writeTimeSeries()
 {
     if (empty())
@@ -135,7 +194,8 @@ void Foam::fdmParticleCloud::writeTimeSeries()
                     runTime.globalPath()/"postProcessing"/"particles.h5",
                     radius_,
                     group_,
-                    runTime.value()
+                    runTime.value(),
+                    hdf5Description()
                 )
             );
         }
@@ -166,12 +226,7 @@ void Foam::fdmParticleCloud::writeLagrangian() const
     checkFinite();
 
     const lagrangianCloudWriter cloud(mesh_, "particles", position_);
-    labelList id(size());
-    forAll(id, p)
-    {
-        id[p] = p;
-    }
-    cloud.write("id", id);
+    cloud.write("id", labelList(identity(size())));
     cloud.write("group", group_);
     cloud.write("d", scalarField(2*radius_));
     cloud.write("U", U_);
@@ -185,95 +240,56 @@ void Foam::fdmParticleCloud::writeLagrangian() const
 }
 
 
-void Foam::fdmParticleCloud::writeVTK() const
+void Foam::fdmParticleCloud::writeVTK()
 {
-    if (empty() || !Pstream::master())
+    const Time& runTime = mesh_.time();
+    const bool due =
+        vtkInterval_ > 0
+      ? runTime.timeIndex() % vtkInterval_ == 0
+      : runTime.writeTime();
+    if (empty() || !Pstream::master() || (vtk_ && !due))
     {
         return;
     }
-
-    const Time& runTime = mesh_.time();
-    const fileName dir = runTime.globalPath()/"VTK";
-    mkDir(dir);
-    const word name = "particles_" + runTime.timeName() + ".vtk";
-
+    checkFinite();
+    if (!vtk_)
     {
-        // Legacy ASCII polydata: one vertex per particle with its data;
-        // in ParaView show with the Glyph filter (sphere, scale by radius)
-        OFstream os(dir/name);
-        os.precision(10);
-        os  << "# vtk DataFile Version 3.0" << nl
-            << "fdmSuspension particles, time " << runTime.timeName() << nl
-            << "ASCII" << nl
-            << "DATASET POLYDATA" << nl
-            << "POINTS " << size() << " double" << nl;
-        for (const point& x : position_)
-        {
-            os  << x.x() << ' ' << x.y() << ' ' << x.z() << nl;
-        }
-        os  << "VERTICES " << size() << ' ' << 2*size() << nl;
-        forAll(position_, p)
-        {
-            os  << "1 " << p << nl;
-        }
-        os  << "POINT_DATA " << size() << nl
-            << "SCALARS radius double 1" << nl
-            << "LOOKUP_TABLE default" << nl;
-        for (const scalar a : radius_)
-        {
-            os  << a << nl;
-        }
-        os  << "SCALARS group int 1" << nl
-            << "LOOKUP_TABLE default" << nl;
-        for (const label g : group_)
-        {
-            os  << g << nl;
-        }
-
-        auto writeVectors = [&os](const char* title, const List<vector>& v)
-        {
-            os  << "VECTORS " << title << " double" << nl;
-            for (const vector& x : v)
-            {
-                os  << x.x() << ' ' << x.y() << ' ' << x.z() << nl;
-            }
-        };
-        writeVectors("velocity", U_);
-        writeVectors("angularVelocity", Omega_);
-        writeVectors("force", force_);
-        writeVectors("torque", torque_);
-        writeVectors("contactForce", contactForce_);
+        // Created at the first call, the start time: the series begins
+        // with the initial state (and -postProcess never gets here)
+        vtk_.reset
+        (
+            new fdm::particleVTKWriter
+            (
+                runTime.globalPath()/"VTK", runTime.value()
+            )
+        );
     }
 
-    // Series file listing every particles_<time>.vtk present, by time
-    fileNameList files = readDir(dir, fileName::FILE);
-    DynamicList<Tuple2<scalar, word>> entries;
-    for (const fileName& f : files)
-    {
-        const word n = f.name();
-        if (n.startsWith("particles_") && n.hasExt("vtk"))
-        {
-            const word t = n.substr(10, n.size() - 14);
-            scalar value;
-            if (readScalar(t, value))
-            {
-                entries.append(Tuple2<scalar, word>(value, n));
-            }
-        }
-    }
-    Foam::sort(entries);
+    auto file = vtk_->particles
+    (
+        runTime.timeName(), runTime.value(), position_
+    );
+    file.write("id", labelList(identity(size())));
+    file.write("group", group_);
+    file.write("radius", radius_);
+    file.write("velocity", U_);
+    file.write("angularVelocity", Omega_);
+    file.write("force", force_);
+    file.write("torque", torque_);
+    file.write("stresslet", stresslet_);
+    file.write("dipoleTrace", dipoleTrace_);
+    file.write("contactForce", contactForce_);
+    file.write("contactTorque", contactTorque_);
+    file.write("contactStresslet", contactStresslet_);
+    file.close();
 
-    OFstream series(dir/"particles.vtk.series");
-    series.precision(12);
-    series << "{\n  \"file-series-version\" : \"1.0\",\n  \"files\" : [\n";
-    forAll(entries, i)
-    {
-        series
-            << "    { \"name\" : \"" << entries[i].second().c_str()
-            << "\", \"time\" : " << entries[i].first() << " }"
-            << (i + 1 < entries.size() ? ",\n" : "\n");
-    }
-    series << "  ]\n}\n";
+    vtk_->contacts
+    (
+        runTime.timeName(),
+        runTime.value(),
+        position_,
+        contacts_ ? contacts_->network(U_, Omega_) : fdm::contactNetwork()
+    );
 }
 
 

@@ -159,7 +159,10 @@ void Foam::particleContacts::update
                         law_->normalStiffness(g.gap, g.floorGap)*dt,
                         c.tangentialStiffness*dt,
                         wall < 0 ? vector::zero : wallVelocity[wall]
-                    )
+                    ),
+                    c.force,
+                    (g.gap + radii[k.first] + (wall < 0 ? radii[j] : 0))
+                   *g.normal
                 }
             );
             ++(wall < 0 ? nPairs_ : nWalls_);
@@ -240,6 +243,28 @@ void Foam::particleContacts::addImplicitLoads
             force, torque, stresslet
         );
     }
+}
+
+
+Foam::fdm::contactNetwork Foam::particleContacts::network
+(
+    const List<vector>& U,
+    const List<vector>& Omega
+) const
+{
+    fdm::contactNetwork links;
+    for (const contactEntry& e : contacts_)
+    {
+        links.append
+        (
+            fdm::contactLink::split
+            (
+                e.k.first, e.k.second, e.branch,
+                e.force + e.spring.force(U, Omega).force
+            )
+        );
+    }
+    return links;
 }
 
 

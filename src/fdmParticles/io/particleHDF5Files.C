@@ -178,19 +178,11 @@ bool appendRow(hid_t f, const char* name, const double* data)
 void writeSegmentAttribute(hid_t f, const UList<fileName>& segments)
 {
     std::string text;
-    for (const fileName& s : segments)
+    for (const fileName& seg : segments)
     {
-        text += s + "\n";
+        text += seg + "\n";
     }
-    const hid_t type = H5Tcopy(H5T_C_S1);
-    H5Tset_size(type, text.size() + 1);
-    const hid_t space = H5Screate(H5S_SCALAR);
-    const hid_t a = H5Acreate2(f, "segments", type, space, H5P_DEFAULT,
-        H5P_DEFAULT);
-    H5Awrite(a, type, text.c_str());
-    H5Aclose(a);
-    H5Sclose(space);
-    H5Tclose(type);
+    particleHDF5Metadata::writeText(f, "segments", text);
 }
 
 } // namespace
@@ -299,6 +291,7 @@ long long Foam::particleHDF5Files::createSegment
     {
         createSeries(f, s.name, shape(0, radius.size(), s.components));
     }
+    particleHDF5Metadata::writeUnits(f);
     check(H5Fflush(f, H5F_SCOPE_LOCAL) >= 0, "writing", path);
     return f;
 }
@@ -334,7 +327,8 @@ void Foam::particleHDF5Files::writeVirtualSeries
     const scalarField& radius,
     const labelList& group,
     const UList<fileName>& segments,
-    const UList<label>& records
+    const UList<label>& records,
+    const particleHDF5Metadata::description& description
 )
 {
     const hid_t fapl = H5Pcreate(H5P_FILE_ACCESS);
@@ -383,6 +377,8 @@ void Foam::particleHDF5Files::writeVirtualSeries
         H5Pclose(dcpl);
         H5Sclose(vspace);
     }
+    particleHDF5Metadata::writeUnits(f);
+    particleHDF5Metadata::writeDescription(f, description);
     check(H5Fclose(f) >= 0, "writing", path);
 }
 

@@ -230,7 +230,10 @@ Foam::label Foam::particleHDF5Writer::nextSegment() const
 void Foam::particleHDF5Writer::writeMaster() const
 {
     const fileName tmp = path_ + ".tmp";
-    writeVirtualSeries(tmp, radius_, group_, segments_, records_);
+    writeVirtualSeries
+    (
+        tmp, radius_, group_, segments_, records_, description_
+    );
     syncFile(tmp);
     if (!mv(tmp, path_))
     {
@@ -238,6 +241,9 @@ void Foam::particleHDF5Writer::writeMaster() const
             << "Cannot rename " << tmp << " to " << path_
             << exit(FatalError);
     }
+    scalarList times;
+    readTimes(path_, times);
+    particleHDF5Metadata::writeXDMF(path_, times, radius_.size());
 }
 
 
@@ -256,12 +262,14 @@ Foam::particleHDF5Writer::particleHDF5Writer
     const fileName& path,
     const scalarField& radius,
     const labelList& group,
-    const scalar startTime
+    const scalar startTime,
+    const particleHDF5Metadata::description& description
 )
 :
     path_(path),
     radius_(radius),
     group_(group),
+    description_(description),
     open_(-1),
     openRecords_(0)
 {

@@ -268,6 +268,8 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
     const scalar logCrushed =
         model_.roughness() > 0 ? std::log(0.01*model_.roughness()) : -GREAT;
 
+    pairForce_.setSize(pairs_.size());
+    pairForce_ = Zero;
     forAll(pairs_, k)
     {
         const label i = pairs_[k].first();
@@ -324,6 +326,7 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
 
         force_[i] += F;
         force_[j] -= F;
+        pairForce_[k] = F;
         torque_[i] += armI*(nij ^ Fs) + Tv;
         torque_[j] += armJ*(nij ^ Fs) - Tv;
 
@@ -435,6 +438,29 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
     {
         position_[i] = box_.wrap(position_[i]);
     }
+}
+
+
+Foam::fdm::contactNetwork Foam::fdm::lubricatedDEM::network() const
+{
+    contactNetwork links;
+    forAll(pairForce_, k)
+    {
+        if (pairForce_[k] != vector::zero)
+        {
+            const label i = pairs_[k].first();
+            const label j = pairs_[k].second();
+            links.append
+            (
+                contactLink::split
+                (
+                    i, j, box_.minimumImage(position_[j] - position_[i]),
+                    pairForce_[k]
+                )
+            );
+        }
+    }
+    return links;
 }
 
 
