@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
-#include "readBounded.H"
 #include "particleVTKWriter.H"
 #include "pairSearch.H"
 #include "cyclicPolyPatch.H"
@@ -304,14 +303,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     (
         output, {"timeSeriesInterval", "vtkInterval"}, "output block"
     );
-    vtkInterval_ = label
-    (
-        fdm::readBoundedOrDefault
-        (
-            output, "vtkInterval", 0, 0, labelMax,
-            "steps between VTK files (0: at the write times)"
-        )
-    );
+    vtkInterval_ = fdm::particleVTKWriter::readInterval(output);
     timeSeriesInterval_ = output.getOrDefault<label>("timeSeriesInterval", 1);
     if (timeSeriesInterval_ < 1)
     {

@@ -156,7 +156,10 @@ Foam::fdmParticleCloud::hdf5Description() const
         {"fluidDensity", {rhoFluid_}},
         {"viscosity", {rhoFluid_*nu_}},
         {"kinematicViscosity", {nu_}},
-        {"shearRate", {planeWalls(mesh_, "HDF5 description", false).shearRate()}},
+        {
+            "shearRate",
+            {planeWalls(mesh_, "HDF5 description", false).shearRate()}
+        },
         {"boxMin", numbers(bb.min())},
         {"boxMax", numbers(bb.max())},
         {
@@ -243,10 +246,10 @@ void Foam::fdmParticleCloud::writeLagrangian() const
 void Foam::fdmParticleCloud::writeVTK()
 {
     const Time& runTime = mesh_.time();
-    const bool due =
-        vtkInterval_ > 0
-      ? runTime.timeIndex() % vtkInterval_ == 0
-      : runTime.writeTime();
+    const bool due = fdm::particleVTKWriter::due
+    (
+        vtkInterval_, runTime.timeIndex(), runTime.writeTime()
+    );
     if (empty() || !Pstream::master() || (vtk_ && !due))
     {
         return;

@@ -7,6 +7,7 @@
 #include "OSspecific.H"
 #include "OFstream.H"
 #include "error.H"
+#include "readBounded.H"
 
 // * * * * * * * * * * * * * * * * vtkPolyFile  * * * * * * * * * * * * * * //
 
@@ -147,6 +148,22 @@ Foam::fdm::particleVTKWriter::particleVTKWriter
     particles_.removeNewer(startTime);
     contacts_.load(dir_/"contacts.vtp", true);
     contacts_.removeNewer(startTime);
+}
+
+
+Foam::label Foam::fdm::particleVTKWriter::readInterval
+(
+    const dictionary& output
+)
+{
+    return label
+    (
+        readBoundedOrDefault
+        (
+            output, "vtkInterval", 0, 0, labelMax,
+            "steps between VTK files (0: at the write times)"
+        )
+    );
 }
 
 
