@@ -7,8 +7,8 @@ per-particle force balance (eq 4.17), and PNG plots.
 
     plotRheology.py [case] [--layer H] [--start STRAIN]
 
-Reads postProcessing/particles.h5, the box from system/blockMeshDict, the
-wall velocities from 0/U and eta = rho nu from constant/transportProperties.
+Reads postProcessing/particles.h5: the records and, from its attributes,
+the box, the viscosity and the walls' shear rate.
 """
 
 import argparse

@@ -8,10 +8,9 @@ the uniformity of Sigma_yy); writes poiseuille.png.
 
     plotPoiseuille.py [case] [--windows 4] [--layer 2] [--phij 0.592]
 
-Reads postProcessing/particles.h5 (every record), the reconstructed U and
-p of the written times, postProcessing/momentumBalance, the box and mesh
-from system/blockMeshDict, dP0/dx from constant/flowProperties and
-eta = rho nu from constant/transportProperties.  Lengths in a1, time in
+Reads postProcessing/particles.h5 (every record; the box, mesh spacing and
+viscosity from its attributes), the reconstructed U and p of the written
+times and postProcessing/momentumBalance (dP0/dx from its -V0 grad P0).  Lengths in a1, time in
 t* = gammaDot_0 t with gammaDot_0 = L_y |dP0/dx|/(4 eta) (eq 6.2).
 """
 

@@ -10,18 +10,17 @@ import numpy as np
 
 from fdmPost.foamFields import read_internal_field
 from fdmPost.particleCase import momentum_balance
-from fdmPost.rheology import channel_case, number, vector
+from fdmPost.rheology import channel_case
 
 
 def read_case(case):
     """(particle series, box L, cells n, eta, dP0/dx) of a channel case:
-    fdmPost.rheology.channel_case, the cells nx ny nz of
-    system/blockMeshDict and the x component of meanPressureGradient from
-    constant/flowProperties."""
-    cs, L, mesh = channel_case(case, 0.0)
-    n = np.array([int(number(mesh, k)) for k in ("nx", "ny", "nz")])
-    G = vector(open(f"{case}/constant/flowProperties").read(),
-               "meanPressureGradient")[0]
+    fdmPost.rheology.channel_case, the cells from the box and the mesh
+    spacing, and dP0/dx (kinematic) from the run's momentum balance, whose
+    pressure column is -V0 grad P0 (postProcessing/momentumBalance)."""
+    cs, L, run = channel_case(case, 0.0)
+    n = np.rint(L / run["meshSpacing"]).astype(int)
+    G = -momentum_balance(case)["pressure"][-1, 0] / np.prod(L)
     return cs, L, n, cs.eta, G
 
 

@@ -244,33 +244,72 @@ def vector(text, key):
     return np.array(m.group(1).split(), float)
 
 
-def _wall_velocity(text, patch):
-    block = text[text.index(patch):]
-    return float(re.search(r"uniform\s*\(\s*(\S+)", block).group(1))
+def run_description(path):
+    """The run attributes of a particles.h5 (written by fdmSuspensionFoam
+    at its first record; README "Output"): text attributes as str, numbers
+    as floats or float arrays (boxMin, boxMax, viscosity, shearRate,
+    meshSpacing, ...).  None for a file written before they existed."""
+    import h5py
+    with h5py.File(path, "r") as f:
+        if "boxMin" not in f.attrs:
+            return None
+        out = {}
+        for k, v in f.attrs.items():
+            if isinstance(v, bytes):
+                out[k] = v.decode()
+            elif isinstance(v, str):
+                out[k] = v
+            else:
+                v = np.asarray(v, float)
+                out[k] = v.item() if v.size == 1 else v
+        return out
 
 
-def channel_case(case, layer):
-    """The particle series of a channel case directory (walls normal to y
-    from the origin): box from system/blockMeshDict (Lx Ly Lz), eta = rho
-    nu from constant/transportProperties.  Returns (series, L, mesh text)."""
+def _description_from_dictionaries(case):
+    """Box, viscosity and wall shear rate of a channel case whose
+    particles.h5 predates the run attributes: Lx Ly Lz of
+    system/blockMeshDict (box from the origin), rho nu of
+    constant/transportProperties, topWall and bottomWall speeds of 0/U."""
     mesh = open(f"{case}/system/blockMeshDict").read()
     L = np.array([number(mesh, k) for k in ("Lx", "Ly", "Lz")])
     transport = open(f"{case}/constant/transportProperties").read()
-    eta = number(transport, "rho") * number(transport, "nu")
-    cs = CouetteSeries.from_h5(f"{case}/postProcessing/particles.h5",
-                               lo=(0, 0, 0), span=L, eta=eta, layer=layer)
-    return cs, L, mesh
+    U0 = open(f"{case}/0/U").read()
+
+    def speed(patch):
+        block = U0[U0.index(patch):]
+        return float(re.search(r"uniform\s*\(\s*(\S+)", block).group(1))
+
+    return {"boxMin": np.zeros(3), "boxMax": L,
+            "viscosity": number(transport, "rho") * number(transport, "nu"),
+            "shearRate": abs(speed("topWall") - speed("bottomWall")) / L[1],
+            "meshSpacing": L[0] / number(mesh, "nx")}
+
+
+def case_description(case):
+    """The run description of a case directory: its particles.h5's
+    attributes, or for a file without them the case's dictionaries."""
+    return (run_description(f"{case}/postProcessing/particles.h5")
+            or _description_from_dictionaries(case))
+
+
+def channel_case(case, layer):
+    """The particle series of a channel case directory (walls normal to y)
+    with its run description (case_description: box, viscosity eta, wall
+    shear rate, mesh spacing).  Returns (series, box edges L, description)."""
+    path = f"{case}/postProcessing/particles.h5"
+    run = case_description(case)
+    lo = np.asarray(run["boxMin"], float)
+    L = np.asarray(run["boxMax"], float) - lo
+    cs = CouetteSeries.from_h5(path, lo=lo, span=L, eta=run["viscosity"],
+                               layer=layer)
+    return cs, L, run
 
 
 def couette_case(case, layer):
     """The particle series of a Couette case directory (channel_case) and
-    its imposed shear rate from the wall velocities of bottomWall and
-    topWall in 0/U."""
-    cs, L, _ = channel_case(case, layer)
-    U0 = open(f"{case}/0/U").read()
-    gamma0 = (_wall_velocity(U0, "topWall")
-              - _wall_velocity(U0, "bottomWall")) / L[1]
-    return cs, gamma0
+    its imposed shear rate |U_top - U_bottom|/L_y."""
+    cs, _, run = channel_case(case, layer)
+    return cs, run["shearRate"]
 
 
 def morris_boulay(phi, phi_m=0.68, Kn=0.75, Ks=0.1, l2=0.8, l3=0.5):

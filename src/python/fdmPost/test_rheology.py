@@ -10,8 +10,9 @@ import numpy as np
 import scipy.signal
 
 from fdmPost.rheology import (CouetteSeries, autocorrelation_time,
-                              block_mean, mechanical_consistency,
-                              slab_volume, symm6_to_tensor)
+                              block_mean, channel_case,
+                              mechanical_consistency, slab_volume,
+                              symm6_to_tensor)
 
 
 class SlabVolume(unittest.TestCase):
@@ -124,6 +125,50 @@ class MechanicalConsistency(unittest.TestCase):
         np.testing.assert_allclose(m[2], 3e-3, rtol=1e-9)
         np.testing.assert_allclose(m[3], 5e-3, rtol=1e-9)
 
+
+
+class CaseDescription(unittest.TestCase):
+    """channel_case takes box, viscosity and shear rate from particles.h5's
+    attributes, and from the dictionaries for a file without them."""
+
+    def write_case(self, d, attrs):
+        os.makedirs(f"{d}/postProcessing")
+        with h5py.File(f"{d}/postProcessing/particles.h5", "w") as f:
+            f["time"] = [0.0]
+            f["position"] = np.full((1, 1, 3), 2.0)
+            f["velocity"] = np.zeros((1, 1, 3))
+            f["radius"] = [1.0]
+            f["stresslet"] = np.zeros((1, 1, 6))
+            f["dipoleTrace"] = np.zeros((1, 1))
+            f.attrs.update(attrs)
+
+    def test_from_attributes(self):
+        with tempfile.TemporaryDirectory() as d:
+            self.write_case(d, {"boxMin": [1.0, -2.0, 0.0],
+                                "boxMax": [9.0, 6.0, 4.0],
+                                "viscosity": 3.0, "shearRate": 0.5,
+                                "meshSpacing": 0.2, "solver": "x"})
+            cs, L, run = channel_case(d, 1.0)
+        np.testing.assert_array_equal(L, [8, 8, 4])
+        np.testing.assert_array_equal(cs.lo, [1, -2, 0])
+        self.assertEqual((cs.eta, run["shearRate"], run["solver"]),
+                         (3.0, 0.5, "x"))
+        self.assertEqual(cs.core, (-1.0, 5.0))
+
+    def test_from_dictionaries_without_attributes(self):
+        with tempfile.TemporaryDirectory() as d:
+            self.write_case(d, {})
+            for sub, text in (
+                    ("system/blockMeshDict", "Lx 8;\nLy 10;\nLz 4;\nnx 40;\n"),
+                    ("constant/transportProperties", "nu 2;\nrho 1.5;\n"),
+                    ("0/U", "bottomWall { value uniform (-1 0 0); }\n"
+                            "topWall { value uniform (4 0 0); }\n")):
+                os.makedirs(os.path.dirname(f"{d}/{sub}"), exist_ok=True)
+                open(f"{d}/{sub}", "w").write(text)
+            cs, L, run = channel_case(d, 1.0)
+        np.testing.assert_array_equal(L, [8, 10, 4])
+        self.assertEqual((cs.eta, run["shearRate"], run["meshSpacing"]),
+                         (3.0, 0.5, 0.2))
 
 if __name__ == "__main__":
     unittest.main()

@@ -23,8 +23,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from fdmPost.rheology import (core_rheology, couette_case, maron_pierce,  # noqa: E402
-                              morris_boulay, number)
+from fdmPost.rheology import (case_description, core_rheology,  # noqa: E402
+                              couette_case, maron_pierce, morris_boulay)
 
 PHI_J = 0.59
 
@@ -40,7 +40,8 @@ def main():
     for case in sorted(glob.glob(f"{here}/run/phi*")):
         if not os.path.exists(f"{case}/postProcessing/particles.h5"):
             continue
-        Ly = number(open(f"{case}/system/blockMeshDict").read(), "Ly")
+        run = case_description(case)
+        Ly = run["boxMax"][1] - run["boxMin"][1]
         cs, gamma0 = couette_case(case, 5.0 if Ly >= 20 else Ly / 4)
         strain = cs.t[-1] * gamma0
         start = args.start if args.start is not None else (
