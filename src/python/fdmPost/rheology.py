@@ -312,12 +312,21 @@ def couette_case(case, layer):
     return cs, run["shearRate"]
 
 
+def morris_boulay_normal(phi, component, phi_m=0.68, Kn=0.75, l2=0.8,
+                         l3=0.5):
+    """Normal viscosity eta_ii = lambda_i K_n r^2/(1 - r)^2, r = phi/phi_m,
+    lambda = (1, l2, l3): Morris & Boulay (1999) with their published
+    constants (particle normal stress -eta_n gammaDot diag(1, l2, l3))."""
+    r = np.asarray(phi, float) / phi_m
+    return {1: 1.0, 2: l2, 3: l3}[component] * Kn * r**2 / (1 - r) ** 2
+
+
 def morris_boulay(phi, phi_m=0.68, Kn=0.75, Ks=0.1, l2=0.8, l3=0.5):
-    """Morris & Boulay (1999) closures (spec anchors): relative shear
-    viscosity and the normal stress differences over the shear stress,
-    N1/Sigma12 = -(1 - l2) eta_n/eta_s, N2/Sigma12 = -(l2 - l3) eta_n/eta_s
-    (particle normal stress -eta_n gammaDot diag(1, l2, l3))."""
+    """Morris & Boulay (1999): relative shear viscosity and the normal
+    stress differences over the shear stress, N1/Sigma12 = -(1 - l2)
+    eta_n/eta_s, N2/Sigma12 = -(l2 - l3) eta_n/eta_s (eta_n:
+    morris_boulay_normal, component 1)."""
     r = np.asarray(phi) / phi_m
-    eta_n = Kn * r**2 / (1 - r) ** 2
+    eta_n = morris_boulay_normal(phi, 1, phi_m, Kn)
     eta_s = 1 + 2.5 * phi / (1 - r) + Ks * r**2 / (1 - r) ** 2
     return eta_s, -(1 - l2) * eta_n / eta_s, -(l2 - l3) * eta_n / eta_s

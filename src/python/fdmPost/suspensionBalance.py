@@ -40,6 +40,7 @@ from scipy import integrate, optimize
 
 from fdmPost.rheology import maron_pierce
 from fdmPost.rheology import morris_boulay as morris_boulay_shear
+from fdmPost.rheology import morris_boulay_normal
 
 PHI_RCP = 0.64
 
@@ -64,12 +65,10 @@ def boyer(phi, component=2, phim=0.585):
 
 
 def morris_boulay(phi, component=2, phim=0.68):
-    """Morris & Boulay (1999), n = 2, K_n = 0.75: lambda_22 = 0.8 K_n,
-    lambda_33 = 0.38 as the thesis tabulates it (0.5 K_n = 0.375, spec
-    D.3)."""
-    lam = {1: 0.75, 2: 0.6, 3: 0.38}[component]
-    r = _ratio(phi, phim)
-    return lam * (r / (1 - r))**2
+    """Morris & Boulay (1999), n = 2 (fdmPost.rheology.morris_boulay_normal,
+    the published K_n = 0.75, lambda = 1, 0.8, 0.5; thesis 2, article 3
+    tabulates lambda_33 K_n rounded to 0.38)."""
+    return morris_boulay_normal(phi, component, phim)
 
 
 def lambda33(phi):
