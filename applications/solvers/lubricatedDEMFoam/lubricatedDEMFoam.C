@@ -29,10 +29,10 @@ Description
     }
     drag                            // Stokes drag against the affine flow
     {
-        viscosity           0;      // on every particle (spec B.2 and
+        viscosity           0;      // on every particle (article 1 and
                                     // resuspension along y: eta_f)
         isolatedViscosity   0;      // extra, on particles with fewer than
-        isolatedBelow       3;      // isolatedBelow interactions (D.1)
+        isolatedBelow       3;      // isolatedBelow interactions (art. 3)
     }
     fixedGroups     ();             // groups held fixed (rough floor made
                                     // by fdmPackParticles --attach-walls),

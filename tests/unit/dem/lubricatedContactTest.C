@@ -129,7 +129,8 @@ TEST(lubricatedContact, contactStartsWhereTheGapReachesTheRoughness)
 TEST(lubricatedContact, smoothSpheresNeverTouch)
 {
     // eps = 0: a pair pressed hard for a long time closes exponentially but
-    // keeps u > 0 (spec A.11)
+    // keeps u > 0 (article 1: the spring g in series removes the 1/u
+    // singularity)
     const fdm::lubricatedContact m = model(0);
     fdm::lubricatedPairState s = m.start(0.1, 1);
     scalar prev = s.logGap;

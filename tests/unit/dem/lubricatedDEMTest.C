@@ -1,6 +1,6 @@
 // Unit tests for Foam::fdm::lubricatedDEM: the two-particle tests of
-// thesis 2 (spec B.1), conservation, frame invariance, Lees-Edwards images,
-// restart and stability
+// thesis 2 (article 1, section 3), conservation, frame invariance,
+// Lees-Edwards images, restart and stability
 
 #include "lubricatedDEM.H"
 #include "mathematicalConstants.H"
@@ -26,7 +26,8 @@ fdm::periodicBox cube(const scalar L)
 }
 
 // Sphere of radius a = 1, density rho, settling under its weight onto a
-// fixed sphere from an initial gap u0 (spec B.1): returns the gap history
+// fixed sphere from an initial gap u0 (article 1, section 3): returns the
+// gap history
 struct settling
 {
     fdm::lubricatedDEM dem;
@@ -352,7 +353,7 @@ fdm::periodicBox openY(const scalar L, const scalar H)
 TEST(lubricatedDEM, isolatedSphereFallsAtTheStokesVelocity)
 {
     // A lone heavy sphere with drag eta_d against the affine flow
-    // gammaDot y e_x (spec D.1): terminal fluctuation velocity
+    // gammaDot y e_x (article 3): terminal fluctuation velocity
     // W/(6 pi (eta_d + eta_iso) a) downwards and no slip along x; the extra
     // drag of isolated particles (below 3 interactions) adds eta_iso.
     // Falling across the shear, the sphere lags the affine flow by

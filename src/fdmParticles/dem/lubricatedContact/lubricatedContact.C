@@ -35,9 +35,9 @@ Foam::scalar Foam::fdm::lubricatedContact::gapUpdate
     // Positive root of A x^2 - B x - C = 0 (eq 17), C > 0: the product of
     // the roots is -C/A < 0, so exactly one is positive.  For B < 0 the
     // usual form subtracts nearly equal numbers when u and u_n are tiny
-    // (spec A.7); the conjugate form 2C/(sqrt(B^2 + 4AC) - B) does not, and
-    // taken in logs it stays exact when C underflows (a smooth pair pressed
-    // for long closes as exp(-t), below the smallest double).
+    // (article 1, eq 22); the conjugate form 2C/(sqrt(B^2 + 4AC) - B) does
+    // not, and taken in logs it stays exact when C underflows (a smooth pair
+    // pressed for long closes as exp(-t), below the smallest double).
     const scalar A = 1 + alpha;
     const scalar B = un + alphaEps - 1/dtStar;
     const scalar C = std::exp(logOld)/dtStar;

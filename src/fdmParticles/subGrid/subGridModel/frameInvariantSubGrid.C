@@ -46,7 +46,8 @@ Foam::frameInvariantSubGrid::readTable
     }
     const dictionary table(is);
 
-    // The solver-resolved part depends on Delta/a, b and c (spec 12.36)
+    // The solver-resolved part depends on Delta/a, b and c (appendix C:
+    // measured at Delta = a/5, b = 5, c = 0.3)
     const scalar deltaTable = table.get<scalar>("delta");
     const scalar bTable = table.get<scalar>("b");
     const scalar cTable = table.get<scalar>("c");
