@@ -51,7 +51,8 @@ BLOCK_LIST = re.compile(r"\{\s*\"(\w+)\"\s*,\s*\{([^}]*)\}\s*\}")
 WORD_LIST = re.compile(r"wordList\s+allowed\s*\(\s*\{([^}]*)\}")
 LITERAL = re.compile(r"\"(\w+)\"")
 OPTION_CXX = re.compile(r"argList::add(?:Bool)?Option\s*\(\s*\"(\w+)\"")
-OPTION_PY = re.compile(r"add_argument\(\s*\"(-[\w-]+)\"(?:\s*,\s*\"(--[\w-]+)\")?")
+OPTION_PY = re.compile(
+    r"add_argument\(\s*\"(-[\w-]+)\"(?:\s*,\s*\"(--[\w-]+)\")?")
 
 # (source file, variable) of lookups in files the solvers write: the
 # particleState of both solvers and the resistance tables

@@ -10,8 +10,9 @@ the uniformity of Sigma_yy); writes poiseuille.png.
 
 Reads postProcessing/particles.h5 (every record; the box, mesh spacing and
 viscosity from its attributes), the reconstructed U and p of the written
-times and postProcessing/momentumBalance (dP0/dx from its -V0 grad P0).  Lengths in a1, time in
-t* = gammaDot_0 t with gammaDot_0 = L_y |dP0/dx|/(4 eta) (eq 6.2).
+times and postProcessing/momentumBalance (dP0/dx from its -V0 grad P0).
+Lengths in a1, time in t* = gammaDot_0 t with gammaDot_0 =
+L_y |dP0/dx|/(4 eta) (eq 6.2).
 """
 
 import argparse

@@ -271,7 +271,8 @@ Foam::fdmParticleCloud::fdmParticleCloud
     contactStresslet_.setSize(size(), Zero);
 
     // One floor on the reduced gaps xi and epsilon for the sub-grid
-    // lubrication and the contact barrier (eq 2.57; the thesis floors both at 1e-5)
+    // lubrication and the contact barrier (eq 2.57; the thesis floors both
+    // at 1e-5)
     const scalar gapFloor = dict_.getOrDefault<scalar>("gapFloor", 1e-5);
     if (!(gapFloor > 0 && gapFloor < 0.1))
     {

@@ -65,7 +65,8 @@ Foam::fdm::vtkPolyFile::vtkPolyFile
     {
         offsets[k] = nPerCell*(k + 1);
     }
-    const vtk::fileTag cells = lines ? vtk::fileTag::LINES : vtk::fileTag::VERTS;
+    const vtk::fileTag cells =
+        lines ? vtk::fileTag::LINES : vtk::fileTag::VERTS;
     f.tag(cells);
     f.beginDataArray<label>(vtk::dataArrayAttr::CONNECTIVITY);
     f.writeSize(vtk::sizeofData<label>(points.size()));
