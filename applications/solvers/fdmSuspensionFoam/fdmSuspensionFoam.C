@@ -86,27 +86,7 @@ int main(int argc, char *argv[])
     // them (functionObjectList::read re-reads only changed dictionaries)
     runTime.functionObjects().start();
 
-    // -quiet: what is left is the set-up, warnings and the step summaries
-    const bool quiet = args.found("quiet");
-    if (quiet)
-    {
-        SolverPerformance<scalar>::debug = 0;
-        SolverPerformance<vector>::debug = 0;
-        outerLoop.setVerbose(false);
-        particles.setVerbose(false);
-    }
-    // The strain of the summary line: shear rate between two moving walls
-    const scalar shearRate =
-        planeWalls(mesh, "step summary", false).shearRate();
-    clockTime runClock;
-
-    momentumBalance balance(mesh);
-    clockTime flowClock;
-    scalar flowSeconds = 0;
-    scalar outputSeconds = 0;
-    scalar accelerationSeconds = 0;
-    label nOuterTotal = 0;
-    const label startTimeIndex = runTime.timeIndex();
+    #include "createRunControls.H"
 
     particles.prepare(lambda);
     if (!particles.empty() && !particles.solved())
@@ -141,16 +121,7 @@ int main(int argc, char *argv[])
             #include "continuityErrs.H"
         }
 
-        clockTime outputClock;
-        runTime.write();
-        particles.writeTimeSeries();
-        particles.writeVTK();
-        if (runTime.writeTime())
-        {
-            particles.writeLagrangian();
-            particles.writeState();
-        }
-        outputSeconds += outputClock.elapsedTime();
+        #include "writeResults.H"
 
         #include "reportTimings.H"
     }

@@ -78,29 +78,17 @@ Description
 
 #include "argList.H"
 #include "Time.H"
-#include "IOdictionary.H"
-#include "IFstream.H"
-#include "OFstream.H"
-#include "OSspecific.H"
-#include "mathematicalConstants.H"
 #include "clockTime.H"
 #include "lubricatedDEM.H"
-#include "particleList.H"
+#include "demSetup.H"
+#include "demState.H"
+#include "demSeries.H"
+#include "demVTK.H"
+#include "demMonitor.H"
 #include "checkTimeControls.H"
-#include "readBounded.H"
-#include "HashSet.H"
-#include "freshOutputFile.H"
-#include "checkKeywords.H"
-#include "fpTrapsOff.H"
 #include "incompleteWrites.H"
-#include "isFinite.H"
-#include "particleVTKWriter.H"
 
 using namespace Foam;
-
-#include "demState.H"
-#include "demSetup.H"
-#include "demOutput.H"
 
 int main(int argc, char *argv[])
 {
@@ -116,42 +104,22 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     fdm::checkTimeControls(runTime);
 
-    IOobject propertiesIO
+    const autoPtr<IOdictionary> propertiesPtr
     (
-        "particleProperties",
-        runTime.constant(),
-        runTime,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE
+        fdm::readDEMProperties(runTime)
     );
-    if (!propertiesIO.typeHeaderOk<IOdictionary>(true))
-    {
-        fdm::requireHeader(propertiesIO.objectPath());
-    }
-    autoPtr<IOdictionary> propertiesPtr;
-    {
-        // A number out of range is the parser's error, not a trap
-        fdm::fpTrapsOff trapsOff;
-        propertiesPtr.reset(new IOdictionary(propertiesIO));
-    }
     const IOdictionary& properties = propertiesPtr();
 
-    fdm::lubricatedDEM dem = createDEM(properties, runTime);
+    fdm::lubricatedDEM dem = fdm::createDEM(properties, runTime);
     const scalar dt = runTime.deltaTValue();
-    checkTimeStep(dem, dt, runTime);
+    fdm::checkTimeStep(dem, dt, runTime);
 
     const dictionary output(properties.subOrEmptyDict("output"));
-    const label outputInterval = label
-    (
-        fdm::readBoundedOrDefault
-        (
-            output, "interval", 100, 1, labelMax,
-            "steps between time-series rows"
-        )
-    );
-    demTracks tracks(runTime, dem, output);
-    demSeries series(runTime, dem);
-    demVTK vtk(runTime, output);
+    const label outputInterval = fdm::demSeries::readInterval(output);
+    fdm::demTracks tracks(runTime, dem, output);
+    fdm::demSeries series(runTime, dem);
+    fdm::demVTK vtk(runTime, output);
+    fdm::demMonitor monitor;
     vtk.write(dem, runTime, 0);
 
     Info<< nl << "Starting time loop" << nl << endl;
@@ -169,7 +137,7 @@ int main(int argc, char *argv[])
         ++stepCount;
         sMax = max(sMax, dem.stabilityNumber());
 
-        checkHealth(dem, runTime);
+        monitor.check(dem, runTime);
 
         if (stepCount % outputInterval == 0)
         {
@@ -182,14 +150,14 @@ int main(int argc, char *argv[])
         if (clock.elapsedTime() >= lastReport + 10 || last)
         {
             lastReport = clock.elapsedTime();
-            reportProgress(dem, runTime, clock, startTime, sMax);
+            monitor.report(dem, runTime, clock, startTime, sMax);
             sMax = 0;
         }
 
         vtk.write(dem, runTime, stepCount);
         if (runTime.writeTime())
         {
-            writeState(dem, runTime);
+            fdm::writeDEMState(dem, runTime);
         }
     }
 

@@ -129,9 +129,9 @@ void Foam::fdmParticleCloud::checkParticles() const
     // What the mesh and the indicator need besides checkParticleList
     const fileName file = dict_.objectPath();
     const scalar minCellsPerRadius = 2;
-    forAll(position_, p)
+    forAll(state_.position, p)
     {
-        const scalar a = radius_[p];
+        const scalar a = state_.radius[p];
         if (a < minCellsPerRadius*delta_)
         {
             FatalIOErrorInFunction(dict_)
@@ -163,13 +163,63 @@ void Foam::fdmParticleCloud::checkParticles() const
 
 Foam::vector Foam::fdmParticleCloud::bodyForce(const label p) const
 {
-    const particleGroup& g = groups_[group_[p]];
+    const particleGroup& g = groups_[state_.group[p]];
     const scalar V =
-        4.0/3.0*constant::mathematical::pi*pow3(radius_[p]);
+        4.0/3.0*constant::mathematical::pi*pow3(state_.radius[p]);
 
     // Buoyant weight (thesis eq 2.11d; gravity on the fluid is in p) and
     // the external force, per unit fluid density like lambda
     return (g.density()/rhoFluid_ - 1)*V*gravity_ + g.force()/rhoFluid_;
+}
+
+
+Foam::scalar Foam::fdmParticleCloud::readGapFloor() const
+{
+    // One floor on the reduced gaps xi and epsilon for the sub-grid
+    // lubrication and the contact barrier (eq 2.57; the thesis floors both
+    // at 1e-5)
+    const scalar gapFloor = dict_.getOrDefault<scalar>("gapFloor", 1e-5);
+    if (!(gapFloor > 0 && gapFloor < 0.1))
+    {
+        FatalIOErrorInFunction(dict_)
+            << "gapFloor " << gapFloor << " in " << dict_.name()
+            << ": allowed values are 0 < gapFloor < 0.1 (floor on the "
+            << "reduced surface gaps; thesis 1e-5)" << exit(FatalIOError);
+    }
+    return gapFloor;
+}
+
+
+void Foam::fdmParticleCloud::readOutput()
+{
+    const dictionary output(dict_.subOrEmptyDict("output"));
+    fdm::checkKeywords
+    (
+        output, {"timeSeriesInterval", "vtkInterval"}, "output block"
+    );
+    vtkInterval_ = fdm::particleVTKWriter::readInterval(output);
+    timeSeriesInterval_ = output.getOrDefault<label>("timeSeriesInterval", 1);
+    if (timeSeriesInterval_ < 1)
+    {
+        FatalIOErrorInFunction(dict_)
+            << "output.timeSeriesInterval " << timeSeriesInterval_ << " in "
+            << dict_.name() << ": allowed values are integers >= 1"
+            << exit(FatalIOError);
+    }
+}
+
+
+void Foam::fdmParticleCloud::reportSetup() const
+{
+    Info<< "    " << size() << " particles in " << groups_.size()
+        << " group(s); Delta = " << delta_ << ", radius/Delta from "
+        << gMin(state_.radius)/delta_ << " to "
+        << gMax(state_.radius)/delta_ << nl
+        << "    indicator b = " << indicator_.b() << ", c = "
+        << indicator_.c() << "; alpha_lambda = " << alphaLambda_ << nl
+        << "    periodic (x y z): (" << box_.periodic(0) << ' '
+        << box_.periodic(1) << ' ' << box_.periodic(2) << "), box "
+        << box_.min() << " + " << box_.span() << nl << endl;
 }
 
 
@@ -258,32 +308,16 @@ Foam::fdmParticleCloud::fdmParticleCloud
     checkParticles();
 
     system_ = fdm::particleVelocitySystem(size());
-    U_.setSize(size(), Zero);
-    Omega_.setSize(size(), Zero);
-    Uold_.setSize(size(), Zero);
-    force_.setSize(size(), Zero);
-    torque_.setSize(size(), Zero);
-    stresslet_.setSize(size(), Zero);
+    state_.resizeVelocities();
+    hydro_ = fdm::particleLoads(size());
     dipoleTrace_.setSize(size(), Zero);
     moments_.setSize(size());
-    contactForce_.setSize(size(), Zero);
-    contactTorque_.setSize(size(), Zero);
-    contactStresslet_.setSize(size(), Zero);
+    contact_ = fdm::particleLoads(size());
 
-    // One floor on the reduced gaps xi and epsilon for the sub-grid
-    // lubrication and the contact barrier (eq 2.57; the thesis floors both
-    // at 1e-5)
-    const scalar gapFloor = dict_.getOrDefault<scalar>("gapFloor", 1e-5);
-    if (!(gapFloor > 0 && gapFloor < 0.1))
-    {
-        FatalIOErrorInFunction(dict_)
-            << "gapFloor " << gapFloor << " in " << dict_.name()
-            << ": allowed values are 0 < gapFloor < 0.1 (floor on the "
-            << "reduced surface gaps; thesis 1e-5)" << exit(FatalIOError);
-    }
+    const scalar gapFloor = readGapFloor();
     contacts_ = particleContacts::New
     (
-        dict_, mesh_, radius_, rhoFluid_*nu_, gapFloor
+        dict_, mesh_, state_.radius, rhoFluid_*nu_, gapFloor
     );
 
     readState();
@@ -296,32 +330,11 @@ Foam::fdmParticleCloud::fdmParticleCloud
         {
             delta_, indicator_.b(), indicator_.c(), gapFloor
         },
-        radius_
+        state_.radius
     );
 
-    const dictionary output(dict_.subOrEmptyDict("output"));
-    fdm::checkKeywords
-    (
-        output, {"timeSeriesInterval", "vtkInterval"}, "output block"
-    );
-    vtkInterval_ = fdm::particleVTKWriter::readInterval(output);
-    timeSeriesInterval_ = output.getOrDefault<label>("timeSeriesInterval", 1);
-    if (timeSeriesInterval_ < 1)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "output.timeSeriesInterval " << timeSeriesInterval_ << " in "
-            << dict_.name() << ": allowed values are integers >= 1"
-            << exit(FatalIOError);
-    }
-
-    Info<< "    " << size() << " particles in " << groups_.size()
-        << " group(s); Delta = " << delta_ << ", radius/Delta from "
-        << gMin(radius_)/delta_ << " to " << gMax(radius_)/delta_ << nl
-        << "    indicator b = " << indicator_.b() << ", c = "
-        << indicator_.c() << "; alpha_lambda = " << alphaLambda_ << nl
-        << "    periodic (x y z): (" << box_.periodic(0) << ' '
-        << box_.periodic(1) << ' ' << box_.periodic(2) << "), box "
-        << box_.min() << " + " << box_.span() << nl << endl;
+    readOutput();
+    reportSetup();
 }
 
 
@@ -339,8 +352,18 @@ Foam::scalar Foam::fdmParticleCloud::smallestGap() const
     {
         return 2;
     }
-    const scalar a1 = min(radius_);
-    return fdm::smallestSurfaceGap(box_, position_, radius_, 2*a1)/a1;
+    const scalar a1 = min(state_.radius);
+    return
+        fdm::smallestSurfaceGap
+        (
+            box_, state_.position, state_.radius, smallestGapReach(), near_
+        )/a1;
+}
+
+
+Foam::scalar Foam::fdmParticleCloud::smallestGapReach() const
+{
+    return 2*min(state_.radius);
 }
 
 
@@ -358,9 +381,9 @@ bool Foam::fdmParticleCloud::requiresBalancingGradient(vector& gradient) const
         return false;
     }
 
-    forAll(position_, p)
+    forAll(state_.position, p)
     {
-        if (groups_[group_[p]].translationPrescribed())
+        if (groups_[state_.group[p]].translationPrescribed())
         {
             // A held particle absorbs any net force
             return false;

@@ -17,6 +17,39 @@ Description
 #include "isFinite.H"
 #include "planeWalls.H"
 #include "StringStream.H"
+#include <cctype>
+
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Force, torque and stresslet as the fields force, torque, stresslet, or
+//  with a prefix <prefix>Force, <prefix>Torque, <prefix>Stresslet, of the
+//  lagrangian cloud or a VTK file
+template<class Writer>
+void writeLoads
+(
+    Writer& w,
+    const std::string& prefix,
+    const Foam::fdm::particleLoads& loads
+)
+{
+    const auto name = [&](const std::string& n)
+    {
+        if (prefix.empty())
+        {
+            return Foam::word(n);
+        }
+        return Foam::word(prefix + char(std::toupper(n[0])) + n.substr(1));
+    };
+    w.write(name("force"), loads.force);
+    w.write(name("torque"), loads.torque);
+    w.write(name("stresslet"), loads.stresslet);
+}
+
+} // namespace
+
 
 // * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
 
@@ -40,18 +73,18 @@ void Foam::fdmParticleCloud::checkFinite() const
             << " system/fvSolution, use acceleration anderson there, or"
             << " lower deltaT in system/controlDict." << exit(FatalError);
     };
-    forAll(position_, p)
+    forAll(state_.position, p)
     {
-        if (!fdm::isFinite(position_[p])) stop("position", p);
-        if (!fdm::isFinite(U_[p])) stop("velocity", p);
-        if (!fdm::isFinite(Omega_[p])) stop("angular velocity", p);
-        if (!fdm::isFinite(force_[p])) stop("force", p);
-        if (!fdm::isFinite(torque_[p])) stop("torque", p);
-        if (!fdm::isFinite(stresslet_[p])) stop("stresslet", p);
+        if (!fdm::isFinite(state_.position[p])) stop("position", p);
+        if (!fdm::isFinite(state_.U[p])) stop("velocity", p);
+        if (!fdm::isFinite(state_.Omega[p])) stop("angular velocity", p);
+        if (!fdm::isFinite(hydro_.force[p])) stop("force", p);
+        if (!fdm::isFinite(hydro_.torque[p])) stop("torque", p);
+        if (!fdm::isFinite(hydro_.stresslet[p])) stop("stresslet", p);
         if (!fdm::isFinite(dipoleTrace_[p])) stop("dipole trace", p);
-        if (!fdm::isFinite(contactForce_[p])) stop("contact force", p);
-        if (!fdm::isFinite(contactTorque_[p])) stop("contact torque", p);
-        if (!fdm::isFinite(contactStresslet_[p])) stop("contact stresslet", p);
+        if (!fdm::isFinite(contact_.force[p])) stop("contact force", p);
+        if (!fdm::isFinite(contact_.torque[p])) stop("contact torque", p);
+        if (!fdm::isFinite(contact_.stresslet[p])) stop("contact stresslet", p);
     }
 }
 
@@ -95,20 +128,20 @@ void Foam::fdmParticleCloud::writeState() const
         os.writeEntry("nParticles", size());
         os.writeEntry("solved", solved_);
         os.writeEntry("hasHistory", hasHistory_);
-        os.writeEntry("radius", radius_);
-        os.writeEntry("position", position_);
-        os.writeEntry("velocity", U_);
-        os.writeEntry("angularVelocity", Omega_);
-        os.writeEntry("previousVelocity", Uold_);
-        os.writeEntry("force", force_);
-        os.writeEntry("torque", torque_);
-        os.writeEntry("stresslet", stresslet_);
+        os.writeEntry("radius", state_.radius);
+        os.writeEntry("position", state_.position);
+        os.writeEntry("velocity", state_.U);
+        os.writeEntry("angularVelocity", state_.Omega);
+        os.writeEntry("previousVelocity", state_.Uold);
+        os.writeEntry("force", hydro_.force);
+        os.writeEntry("torque", hydro_.torque);
+        os.writeEntry("stresslet", hydro_.stresslet);
         os.writeEntry("dipoleTrace", dipoleTrace_);
         if (contacts_)
         {
-            os.writeEntry("contactForce", contactForce_);
-            os.writeEntry("contactTorque", contactTorque_);
-            os.writeEntry("contactStresslet", contactStresslet_);
+            os.writeEntry("contactForce", contact_.force);
+            os.writeEntry("contactTorque", contact_.torque);
+            os.writeEntry("contactStresslet", contact_.stresslet);
             contacts_->writeState(os);
         }
         IOobject::writeEndDivider(os);
@@ -195,8 +228,8 @@ void Foam::fdmParticleCloud::writeTimeSeries()
                 new particleHDF5Writer
                 (
                     runTime.globalPath()/"postProcessing"/"particles.h5",
-                    radius_,
-                    group_,
+                    state_.radius,
+                    state_.group,
                     runTime.value(),
                     hdf5Description()
                 )
@@ -206,9 +239,9 @@ void Foam::fdmParticleCloud::writeTimeSeries()
         (
             runTime.value(),
             {
-                position_, U_, Omega_, force_, torque_, stresslet_,
-                dipoleTrace_, contactForce_, contactTorque_,
-                contactStresslet_
+                state_.position, state_.U, state_.Omega,
+                hydro_.force, hydro_.torque, hydro_.stresslet, dipoleTrace_,
+                contact_.force, contact_.torque, contact_.stresslet
             }
         );
     }
@@ -228,18 +261,14 @@ void Foam::fdmParticleCloud::writeLagrangian() const
     }
     checkFinite();
 
-    const lagrangianCloudWriter cloud(mesh_, "particles", position_);
+    const lagrangianCloudWriter cloud(mesh_, "particles", state_.position);
     cloud.write("id", labelList(identity(size())));
-    cloud.write("group", group_);
-    cloud.write("d", scalarField(2*radius_));
-    cloud.write("U", U_);
-    cloud.write("omega", Omega_);
-    cloud.write("force", force_);
-    cloud.write("torque", torque_);
-    cloud.write("stresslet", stresslet_);
-    cloud.write("contactForce", contactForce_);
-    cloud.write("contactTorque", contactTorque_);
-    cloud.write("contactStresslet", contactStresslet_);
+    cloud.write("group", state_.group);
+    cloud.write("d", scalarField(2*state_.radius));
+    cloud.write("U", state_.U);
+    cloud.write("omega", state_.Omega);
+    writeLoads(cloud, "", hydro_);
+    writeLoads(cloud, "contact", contact_);
 }
 
 
@@ -270,28 +299,26 @@ void Foam::fdmParticleCloud::writeVTK()
 
     auto file = vtk_->particles
     (
-        runTime.timeName(), runTime.value(), position_
+        runTime.timeName(), runTime.value(), state_.position
     );
     file.write("id", labelList(identity(size())));
-    file.write("group", group_);
-    file.write("radius", radius_);
-    file.write("velocity", U_);
-    file.write("angularVelocity", Omega_);
-    file.write("force", force_);
-    file.write("torque", torque_);
-    file.write("stresslet", stresslet_);
+    file.write("group", state_.group);
+    file.write("radius", state_.radius);
+    file.write("velocity", state_.U);
+    file.write("angularVelocity", state_.Omega);
+    writeLoads(file, "", hydro_);
     file.write("dipoleTrace", dipoleTrace_);
-    file.write("contactForce", contactForce_);
-    file.write("contactTorque", contactTorque_);
-    file.write("contactStresslet", contactStresslet_);
+    writeLoads(file, "contact", contact_);
     file.close();
 
     vtk_->contacts
     (
         runTime.timeName(),
         runTime.value(),
-        position_,
-        contacts_ ? contacts_->network(U_, Omega_) : fdm::contactNetwork()
+        state_.position,
+        contacts_
+      ? contacts_->network(state_.U, state_.Omega)
+      : fdm::contactNetwork()
     );
 }
 

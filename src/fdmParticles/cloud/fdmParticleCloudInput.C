@@ -139,15 +139,15 @@ void Foam::fdmParticleCloud::readParticles()
     fdm::particleList list =
         fdm::readParticleList(dict_, mesh_.time().constant());
 
-    group_.setSize(list.group.size());
+    state_.group.setSize(list.group.size());
     forAll(list.group, i)
     {
-        group_[i] = groupIndex(list.group[i], dict_);
+        state_.group[i] = groupIndex(list.group[i], dict_);
         list.position[i] = box_.wrap(list.position[i]);
     }
     fdm::checkParticleList(list.position, list.radius, box_, list.source);
-    radius_.transfer(list.radius);
-    position_.transfer(list.position);
+    state_.radius.transfer(list.radius);
+    state_.position.transfer(list.position);
 }
 
 
@@ -188,9 +188,9 @@ void Foam::fdmParticleCloud::readState()
     }
 
     const scalarField radius(state.get<scalarField>("radius"));
-    const scalar change = max(mag(radius - radius_));
+    const scalar change = max(mag(radius - state_.radius));
     const bool accept = dict_.getOrDefault("acceptChangedRadii", false);
-    if (change > 1e-12*max(radius_) && !accept)
+    if (change > 1e-12*max(state_.radius) && !accept)
     {
         FatalIOErrorInFunction(dict_)
             << "The particle radii in " << dict_.name() << " differ from"
@@ -201,13 +201,13 @@ void Foam::fdmParticleCloud::readState()
             << " to continue with the new radii" << exit(FatalIOError);
     }
 
-    position_ = state.get<pointField>("position");
-    U_ = state.get<List<vector>>("velocity");
-    Omega_ = state.get<List<vector>>("angularVelocity");
-    Uold_ = state.get<List<vector>>("previousVelocity");
-    force_ = state.get<List<vector>>("force");
-    torque_ = state.get<List<vector>>("torque");
-    state.readIfPresent("stresslet", stresslet_);
+    state_.position = state.get<pointField>("position");
+    state_.U = state.get<List<vector>>("velocity");
+    state_.Omega = state.get<List<vector>>("angularVelocity");
+    state_.Uold = state.get<List<vector>>("previousVelocity");
+    hydro_.force = state.get<List<vector>>("force");
+    hydro_.torque = state.get<List<vector>>("torque");
+    state.readIfPresent("stresslet", hydro_.stresslet);
     state.readIfPresent("dipoleTrace", dipoleTrace_);
     if (contacts_)
     {
@@ -215,9 +215,9 @@ void Foam::fdmParticleCloud::readState()
         // The loads at the solved state (explicit part plus the implicit
         // stiffness' share), so that the record at the restart time is the
         // one the interrupted run wrote
-        contactForce_ = state.get<List<vector>>("contactForce");
-        contactTorque_ = state.get<List<vector>>("contactTorque");
-        contactStresslet_ = state.get<List<symmTensor>>("contactStresslet");
+        contact_.force = state.get<List<vector>>("contactForce");
+        contact_.torque = state.get<List<vector>>("contactTorque");
+        contact_.stresslet = state.get<List<symmTensor>>("contactStresslet");
     }
     solved_ = state.get<bool>("solved");
     hasHistory_ = state.get<bool>("hasHistory");

@@ -15,15 +15,16 @@ void Foam::particleContacts::forEachContact
     const pointField& positions,
     const scalarField& radii,
     const fdm::periodicBox& box,
+    const UList<labelPair>& near,
     const Action& action
 ) const
 {
     // action(key, geometry, arm of i, arm of j, wall or -1): the arm is the
     // distance from the centre to the contact point along n, the weight
     // a_i r/(a_i + a_j) of eqs 2.64 and 2.69
-    DynamicList<labelPair> near;
-    fdm::findNearPairs(box, positions, radii, law_->roughness(), near);
-    for (const labelPair& pq : near)
+    DynamicList<labelPair> touching;
+    fdm::selectNearPairs(box, positions, radii, pairReach(), near, touching);
+    for (const labelPair& pq : touching)
     {
         const label i = pq.first(), j = pq.second();
         const vector r = box.minimumImage(positions[j] - positions[i]);
@@ -70,9 +71,7 @@ Foam::particleContacts::particleContacts
     law_(fdm::contactLaw::New(dict, s)),
     walls_(mesh, "particle-wall contact"),
     gapFloor_(gapFloor),
-    force_(nParticles, Zero),
-    torque_(nParticles, Zero),
-    stresslet_(nParticles, Zero),
+    loads_(nParticles),
     nPairs_(0),
     nWalls_(0),
     nSliding_(0),
@@ -115,6 +114,7 @@ void Foam::particleContacts::update
     const pointField& positions,
     const scalarField& radii,
     const fdm::periodicBox& box,
+    const UList<labelPair>& near,
     const scalar dt
 )
 {
@@ -124,16 +124,14 @@ void Foam::particleContacts::update
     {
         wallVelocity[w] = walls_.velocity(walls_.walls()[w]);
     }
-    force_ = Zero;
-    torque_ = Zero;
-    stresslet_ = Zero;
+    loads_ = fdm::particleLoads(loads_.force.size());
     nPairs_ = nWalls_ = nSliding_ = nBelowFloor_ = 0;
     minGap_ = GREAT;
 
     std::map<key, vector> current;
     forEachContact
     (
-        positions, radii, box,
+        positions, radii, box, near,
         [&](const key& k, const fdm::contactGeometry& g, const scalar armI,
             const scalar armJ, const label wall)
         {
@@ -145,8 +143,7 @@ void Foam::particleContacts::update
             const label j = wall < 0 ? k.second : -1;
             fdm::addContactLoads
             (
-                c, g.normal, armI, armJ, k.first, j, force_, torque_,
-                stresslet_
+                c, g.normal, armI, armJ, k.first, j, loads_
             );
             contacts_.push_back
             (
@@ -229,9 +226,7 @@ void Foam::particleContacts::addImplicitLoads
 (
     const List<vector>& U,
     const List<vector>& Omega,
-    List<vector>& force,
-    List<vector>& torque,
-    List<symmTensor>& stresslet
+    fdm::particleLoads& loads
 ) const
 {
     for (const contactEntry& e : contacts_)
@@ -240,7 +235,7 @@ void Foam::particleContacts::addImplicitLoads
         fdm::addContactLoads
         (
             s.force(U, Omega), s.normal(), s.armI(), s.armJ(), s.i(), s.j(),
-            force, torque, stresslet
+            loads
         );
     }
 }

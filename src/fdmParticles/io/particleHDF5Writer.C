@@ -119,42 +119,59 @@ void Foam::particleHDF5Writer::recover(const scalar startTime)
 
     if (isFile(path_))
     {
-        wordList listed;
-        const label status = readSegmentList(path_, listed);
-        if (status == unreadable)
+        adoptExisting();
+    }
+    removeUnlisted();
+    if (!dropRecordsFrom(startTime) && (segments_.size() || isFile(path_)))
+    {
+        writeMaster();
+    }
+}
+
+
+void Foam::particleHDF5Writer::adoptExisting()
+{
+    const fileName dir = path_.path();
+    wordList listed;
+    const label status = readSegmentList(path_, listed);
+    if (status == unreadable)
+    {
+        const fileName aside = freeName(path_, "unreadable");
+        mv(path_, aside);
+        Info<< "particles.h5: " << path_ << " cannot be opened (written"
+            << " by a killed run of an earlier version); moved to "
+            << aside << ", the series starts afresh" << nl;
+    }
+    else if (status == plainSeries)
+    {
+        // Hard-linked, not moved: until the particles.h5 written below
+        // replaces it, the old file stays what a kill would leave
+        const fileName seg = segmentName(nextSegment());
+        if (::link(path_.c_str(), (dir/seg).c_str()) != 0)
         {
-            const fileName aside = freeName(path_, "unreadable");
-            mv(path_, aside);
-            Info<< "particles.h5: " << path_ << " cannot be opened (written"
-                << " by a killed run of an earlier version); moved to "
-                << aside << ", the series starts afresh" << nl;
+            FatalErrorInFunction
+                << "Cannot link " << path_ << " to " << dir/seg
+                << exit(FatalError);
         }
-        else if (status == plainSeries)
+        segments_.append(seg);
+        records_.append(nRecords(dir/seg));
+        Info<< "particles.h5: series of an earlier version kept as "
+            << dir/seg << nl;
+    }
+    else
+    {
+        for (const word& w : listed)
         {
-            // Hard-linked, not moved: until the particles.h5 written below
-            // replaces it, the old file stays what a kill would leave
-            const fileName seg = segmentName(nextSegment());
-            if (::link(path_.c_str(), (dir/seg).c_str()) != 0)
-            {
-                FatalErrorInFunction
-                    << "Cannot link " << path_ << " to " << dir/seg
-                    << exit(FatalError);
-            }
-            segments_.append(seg);
-            records_.append(nRecords(dir/seg));
-            Info<< "particles.h5: series of an earlier version kept as "
-                << dir/seg << nl;
-        }
-        else
-        {
-            for (const word& w : listed)
-            {
-                segments_.append(fileName("particles")/w);
-                records_.append(nRecords(dir/segments_.last()));
-            }
+            segments_.append(fileName("particles")/w);
+            records_.append(nRecords(dir/segments_.last()));
         }
     }
+}
 
+
+void Foam::particleHDF5Writer::removeUnlisted()
+{
+    const fileName dir = path_.path();
     // Segments that no particles.h5 lists: records a killed run wrote
     // after its last commit (or before a crash of the commit itself)
     for (const fileName& f : readDir(dir/"particles", fileName::FILE))
@@ -168,7 +185,12 @@ void Foam::particleHDF5Writer::recover(const scalar startTime)
             rm(dir/seg);
         }
     }
+}
 
+
+bool Foam::particleHDF5Writer::dropRecordsFrom(const scalar startTime)
+{
+    const fileName dir = path_.path();
     // Records at or after the start time are recomputed by this run
     forAll(segments_, i)
     {
@@ -205,13 +227,9 @@ void Foam::particleHDF5Writer::recover(const scalar startTime)
         Info<< "particles.h5: dropped " << dropped << " record(s) at or"
             << " after the start time " << startTime << " (this run"
             << " recomputes them)" << nl;
-        return;
+        return true;
     }
-
-    if (segments_.size() || isFile(path_))
-    {
-        writeMaster();
-    }
+    return false;
 }
 
 

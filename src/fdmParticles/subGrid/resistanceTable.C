@@ -54,18 +54,9 @@ Foam::label Foam::fdm::resistanceTable::lengthPower(const word& name)
 }
 
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::fdm::resistanceTable::resistanceTable
-(
-    const dictionary& dict,
-    const scalar xMin
-)
-:
-    name_(dict.name()),
-    pair_(true),
-    lambda_(0),
-    xMin_(xMin)
+Foam::word Foam::fdm::resistanceTable::readKind(const dictionary& dict)
 {
     const word kind(dict.get<word>("kind"));
     if (kind == "pair")
@@ -103,7 +94,12 @@ Foam::fdm::resistanceTable::resistanceTable
                 << " must be positive" << exit(FatalIOError);
         }
     }
+    return kind;
+}
 
+
+void Foam::fdm::resistanceTable::readGaps(const dictionary& dict)
+{
     if (xMin_ <= 0)
     {
         FatalIOErrorInFunction(dict)
@@ -135,6 +131,65 @@ Foam::fdm::resistanceTable::resistanceTable
             << "Resistance table " << name_ << ": last gap " << gap_.last()
             << " is below the gap floor " << xMin_ << exit(FatalIOError);
     }
+}
+
+
+void Foam::fdm::resistanceTable::readFunction
+(
+    const dictionary& fd,
+    const label fi,
+    const word& fn
+)
+{
+    const scalarList g(fd.get<scalarList>("singular"));
+    if (g.size() != 3)
+    {
+        FatalIOErrorInFunction(fd)
+            << "Resistance table " << name_ << ": " << fn
+            << "/singular needs 3 coefficients (1/x, ln(1/x),"
+            << " x ln(1/x)), got " << g.size() << exit(FatalIOError);
+    }
+    for (label k = 0; k < 3; ++k)
+    {
+        singular_[fi][k] = g[k];
+    }
+
+    fd.readEntry("remainder", remainder_[fi]);
+    if (remainder_[fi].size() != gap_.size())
+    {
+        FatalIOErrorInFunction(fd)
+            << "Resistance table " << name_ << ": " << fn
+            << "/remainder has " << remainder_[fi].size()
+            << " values but gap has " << gap_.size()
+            << exit(FatalIOError);
+    }
+
+    cutoff_[fi] = fd.getOrDefault<scalar>("cutoff", defaultCutoff(fn));
+    if (cutoff_[fi] <= 0)
+    {
+        FatalIOErrorInFunction(fd)
+            << "Resistance table " << name_ << ": " << fn
+            << "/cutoff = " << cutoff_[fi] << " must be positive"
+            << exit(FatalIOError);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdm::resistanceTable::resistanceTable
+(
+    const dictionary& dict,
+    const scalar xMin
+)
+:
+    name_(dict.name()),
+    pair_(true),
+    lambda_(0),
+    xMin_(xMin)
+{
+    const word kind(readKind(dict));
+    readGaps(dict);
 
     const dictionary* funcsPtr = dict.findDict("functions");
     if (!funcsPtr)
@@ -161,39 +216,7 @@ Foam::fdm::resistanceTable::resistanceTable
                 << fn << " (a " << kind << " table needs " << names << ")"
                 << exit(FatalIOError);
         }
-        const dictionary& fd = *fPtr;
-
-        const scalarList g(fd.get<scalarList>("singular"));
-        if (g.size() != 3)
-        {
-            FatalIOErrorInFunction(fd)
-                << "Resistance table " << name_ << ": " << fn
-                << "/singular needs 3 coefficients (1/x, ln(1/x),"
-                << " x ln(1/x)), got " << g.size() << exit(FatalIOError);
-        }
-        for (label k = 0; k < 3; ++k)
-        {
-            singular_[fi][k] = g[k];
-        }
-
-        fd.readEntry("remainder", remainder_[fi]);
-        if (remainder_[fi].size() != gap_.size())
-        {
-            FatalIOErrorInFunction(fd)
-                << "Resistance table " << name_ << ": " << fn
-                << "/remainder has " << remainder_[fi].size()
-                << " values but gap has " << gap_.size()
-                << exit(FatalIOError);
-        }
-
-        cutoff_[fi] = fd.getOrDefault<scalar>("cutoff", defaultCutoff(fn));
-        if (cutoff_[fi] <= 0)
-        {
-            FatalIOErrorInFunction(fd)
-                << "Resistance table " << name_ << ": " << fn
-                << "/cutoff = " << cutoff_[fi] << " must be positive"
-                << exit(FatalIOError);
-        }
+        readFunction(*fPtr, fi, fn);
     }
 }
 

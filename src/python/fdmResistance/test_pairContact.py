@@ -4,6 +4,7 @@ description of the pair's mobility, and the rough-pair trajectories
 whatever the initial offset, Da Cunha & Hinch 1996)."""
 
 import math
+import pathlib
 import unittest
 
 import numpy as np
@@ -31,6 +32,18 @@ class ContactLawTest(unittest.TestCase):
         self.assertAlmostEqual(np.linalg.norm(law.tangential(f_el, delta,
                                                              small)),
                                (2 / 7) * f_el / delta * 1e-5, 10)
+
+
+    def test_barrier_matches_the_cpp_golden_table(self):
+        # Eq 2.57 as the C++ law evaluates it (tests/unit/contact/
+        # contactLawTest.C writes the table): F_el/k_n to 1e-13
+        table = np.loadtxt(pathlib.Path(__file__).resolve().parents[3]
+                           / "tests" / "golden" / "contactBarrier.dat")
+        self.assertEqual(len(table), 48)
+        for hr, floor, gap, f in table:
+            law = pc.ContactLaw(roughness=hr, gap_floor=floor, lam=1)
+            self.assertAlmostEqual(law.normal(gap)[0] / law.kn, f,
+                                   delta=1e-13 * f)
 
 
 class PairTest(unittest.TestCase):

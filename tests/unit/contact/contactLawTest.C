@@ -10,7 +10,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 using namespace Foam;
 
@@ -34,12 +38,54 @@ fdm::contactGeometry geometry(const scalar gap)
     return fdm::contactGeometry{vector(1, 0, 0), gap, floorGap};
 }
 
-// Eq 2.57 written out independently of the implementation
-scalar barrierForce(const scalar gap)
+// Golden table of eq 2.57, rows (h_r, floor gap, gap, F_el/k_n); the
+// Python contact law (fdmResistance.pairContact) is tested on it too
+std::string goldenTable()
 {
-    const scalar d = floorGap/hr;
-    return kn*std::pow(hr - gap, 1.5)
-       *(1 - std::exp(10*(d - 1)))/(1 - std::exp(10*(d - gap/hr)));
+    const char* root = std::getenv("FDM_PROJECT_DIR");
+    return std::string(root ? root : ".") + "/tests/golden/contactBarrier.dat";
+}
+
+std::vector<std::vector<double>> readGolden(const std::string& file)
+{
+    std::vector<std::vector<double>> rows;
+    std::ifstream is(file);
+    std::string line;
+    while (std::getline(is, line))
+    {
+        if (line.empty() || line[0] == '#')
+        {
+            continue;
+        }
+        std::istringstream ls(line);
+        std::vector<double> row(4);
+        ls >> row[0] >> row[1] >> row[2] >> row[3];
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+// The rows of the table: onset, Hertz range, near the floor, at and below
+// it, for two roughnesses and two floor gaps
+std::vector<std::vector<double>> goldenRows()
+{
+    std::vector<std::vector<double>> rows;
+    for (const double h : {5e-3, 1e-2})
+    for (const double floor : {1e-5, 1.2e-5})
+    for
+    (
+        const double gap
+      : {2*h, h, 0.9*h, 0.5*h, 0.1*h, 0.01*h, 3e-5, 2*floor,
+         1.5*floor, floor + 1e-9*h, floor, 0.5*floor}
+    )
+    {
+        std::ostringstream entries;
+        entries.precision(17);
+        entries << "roughness " << h << "; friction 0.5; kn 1;";
+        const double f = law(entries.str())->elasticNormalForce(gap, floor);
+        rows.push_back({h, floor, gap, f});
+    }
+    return rows;
 }
 
 } // namespace
@@ -55,19 +101,43 @@ TEST(contactLaw, normalForceFollowsHertzWithBarrier)
     EXPECT_EQ(c->elasticNormalForce(hr, floorGap), 0);
     EXPECT_EQ(c->elasticNormalForce(2*hr, floorGap), 0);
 
-    for (const scalar gap : {0.9*hr, 0.5*hr, 0.1*hr, 0.01*hr, 3e-5})
-    {
-        EXPECT_NEAR
-        (
-            c->elasticNormalForce(gap, floorGap)/barrierForce(gap), 1, 1e-12
-        );
-    }
     // Far from the floor the barrier is 1 to 1e-3: plain Hertz
     EXPECT_NEAR
     (
         c->elasticNormalForce(0.5*hr, floorGap)/(kn*std::pow(0.5*hr, 1.5)),
         1, 1e-2
     );
+}
+
+
+TEST(contactLaw, barrierMatchesTheGoldenTable)
+{
+    // FDM_WRITE_GOLDEN=1 fdmUnitTests rewrites the table after a deliberate
+    // change of eq 2.57 (and the Python law must follow)
+    const std::vector<std::vector<double>> rows(goldenRows());
+    if (std::getenv("FDM_WRITE_GOLDEN"))
+    {
+        std::ofstream os(goldenTable());
+        os.precision(17);
+        os  << "# Eq 2.57 (thesis 1): F_el/k_n of the rough Hertz contact with"
+            << " barrier,\n# written by tests/unit/contact/contactLawTest.C"
+            << " (FDM_WRITE_GOLDEN=1)\n# roughness floorGap gap F_el/k_n\n";
+        for (const auto& r : rows)
+        {
+            os << r[0] << ' ' << r[1] << ' ' << r[2] << ' ' << r[3] << '\n';
+        }
+    }
+    const std::vector<std::vector<double>> golden(readGolden(goldenTable()));
+    ASSERT_EQ(golden.size(), rows.size()) << goldenTable();
+    for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            EXPECT_EQ(golden[i][k], rows[i][k]) << "row " << i;
+        }
+        EXPECT_NEAR(rows[i][3], golden[i][3], 1e-14*golden[i][3])
+            << "row " << i;
+    }
 }
 
 
@@ -252,11 +322,13 @@ TEST(contactLaw, pairLoadsConserveMomentumAndAngularMomentum)
         c->evaluate(fdm::contactGeometry{n, gap, 1e-5*(ai + aj)/2}, slip);
     ASSERT_GT(mag(f.tangential), 0);
 
-    List<vector> F(2, Zero), T(2, Zero);
-    List<symmTensor> S(2, Zero);
+    fdm::particleLoads loads(2);
+    const List<vector>& F = loads.force;
+    const List<vector>& T = loads.torque;
+    const List<symmTensor>& S = loads.stresslet;
     fdm::addContactLoads
     (
-        f, n, ai*r/(ai + aj), aj*r/(ai + aj), 0, 1, F, T, S
+        f, n, ai*r/(ai + aj), aj*r/(ai + aj), 0, 1, loads
     );
 
     // Newton's third law and no net moment about the origin

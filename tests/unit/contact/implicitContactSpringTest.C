@@ -50,12 +50,13 @@ TEST(implicitContactSpring, matrixIsTheLoadsOfTheImplicitForce)
     system.multiply(U, Omega, RF, RT);
 
     // R u is minus the loads of -k dt U_s applied through eqs 2.55, 2.64
-    List<vector> F(2, Zero), T(2, Zero);
-    List<symmTensor> S(2, Zero);
+    fdm::particleLoads loads(2);
+    const List<vector>& F = loads.force;
+    const List<vector>& T = loads.torque;
     const fdm::contactForce c = s.spring.force(U, Omega);
     EXPECT_NEAR(c.tangential & s.n, 0, 1e-15);
     EXPECT_NEAR(c.force & s.n, -11.0*s.spring.approach(U), 1e-14);
-    fdm::addContactLoads(c, s.n, s.li, s.lj, 0, 1, F, T, S);
+    fdm::addContactLoads(c, s.n, s.li, s.lj, 0, 1, loads);
     for (label p = 0; p < 2; ++p)
     {
         EXPECT_NEAR(mag(RF[p] + F[p]), 0, 1e-13) << p;

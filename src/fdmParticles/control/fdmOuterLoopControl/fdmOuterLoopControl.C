@@ -52,6 +52,14 @@ void Foam::fdmOuterLoopControl::read()
             << ": allowed values are >= 0" << exit(FatalIOError);
     }
 
+    readAcceleration(d);
+    readLayerMeanCorrection(d);
+    checkURelaxation();
+}
+
+
+void Foam::fdmOuterLoopControl::readAcceleration(const dictionary& d)
+{
     const word acceleration = d.getOrDefault<word>("acceleration", "none");
     if (acceleration == "none")
     {
@@ -75,7 +83,11 @@ void Foam::fdmOuterLoopControl::read()
             << ": allowed values are none (thesis outer iteration) and"
             << " anderson" << exit(FatalIOError);
     }
+}
 
+
+void Foam::fdmOuterLoopControl::readLayerMeanCorrection(const dictionary& d)
+{
     layerMeanCorrection_ = d.getOrDefault<bool>("layerMeanCorrection", false);
     layerMeanViscosityRatio_ =
         d.getOrDefault<scalar>("layerMeanViscosityRatio", 16);
@@ -87,7 +99,11 @@ void Foam::fdmOuterLoopControl::read()
             << " >= 1 (16: validation/benchmarks/frozenCouette)"
             << exit(FatalIOError);
     }
+}
 
+
+void Foam::fdmOuterLoopControl::checkURelaxation() const
+{
     const dictionary& solDict = mesh_.solutionDict();
     const bool relaxed = mesh_.relaxEquation("U");
     const scalar alpha = relaxed ? mesh_.equationRelaxationFactor("U") : 1;

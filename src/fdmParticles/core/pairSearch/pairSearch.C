@@ -9,6 +9,148 @@
 #include <algorithm>
 #include <cmath>
 
+// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
+//- Particles binned in cells of at least binSize per direction (linked
+//  lists head/next); the bin index of a position outside the box along a
+//  non-periodic direction is clamped to the end bins
+class binGrid
+{
+    const fdm::periodicBox& box_;
+    FixedList<label, 3> nBins_;
+    labelList head_;
+    labelList next_;
+    List<FixedList<label, 3>> coords_;
+
+    label index(const label i, const label j, const label k) const
+    {
+        return i + nBins_[0]*(j + nBins_[1]*k);
+    }
+
+    label coord(const point& x, const direction d) const
+    {
+        const label b =
+            label((x[d] - box_.min()[d])/box_.span()[d]*nBins_[d]);
+        return min(max(b, label(0)), nBins_[d] - 1);
+    }
+
+    //- Bin of coordinates c, wrapped across periodic directions; -1 when
+    //  outside along an open one
+    label wrapped(FixedList<label, 3> c) const
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            if (c[d] < 0 || c[d] >= nBins_[d])
+            {
+                if (!box_.periodic(d))
+                {
+                    return -1;
+                }
+                c[d] = ((c[d] % nBins_[d]) + nBins_[d]) % nBins_[d];
+            }
+        }
+        return index(c[0], c[1], c[2]);
+    }
+
+public:
+
+    binGrid
+    (
+        const fdm::periodicBox& box,
+        const UList<point>& positions,
+        const scalar binSize
+    )
+    :
+        box_(box),
+        next_(positions.size(), -1),
+        coords_(positions.size())
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            nBins_[d] = max(label(1), label(box.span()[d]/binSize));
+        }
+        head_.setSize(nBins_[0]*nBins_[1]*nBins_[2], -1);
+        forAll(positions, p)
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                coords_[p][d] = coord(positions[p], d);
+            }
+            const label b = index(coords_[p][0], coords_[p][1], coords_[p][2]);
+            next_[p] = head_[b];
+            head_[b] = p;
+        }
+    }
+
+    label head(const label bin) const { return head_[bin]; }
+    label next(const label p) const { return next_[p]; }
+
+    //- Neighbour bins of p's bin, wrapped across periodic directions,
+    //  sorted and unique (with fewer than three bins a wrap revisits one)
+    void neighbours(const label p, DynamicList<label>& bins) const
+    {
+        bins.clear();
+        for (label dk = -1; dk <= 1; ++dk)
+        for (label dj = -1; dj <= 1; ++dj)
+        {
+            // Across the y faces of a Lees-Edwards cell the neighbour row
+            // is the image shifted by the offset: its particles near x sit
+            // near x - k s in the row, so the x stencil moves by that many
+            // bins and widens by one to cover the fraction.
+            const label row = coords_[p][1] + dj;
+            const label k = (row < 0) ? -1 : (row >= nBins_[1]) ? 1 : 0;
+            label iLow = -1;
+            label iHigh = 1;
+            if (k != 0 && box_.shearOffset() != 0)
+            {
+                const scalar shift =
+                    -k*box_.shearOffset()/box_.span()[0]*nBins_[0];
+                iLow = label(std::floor(shift)) - 1;
+                iHigh = iLow + 3;
+            }
+            for (label di = iLow; di <= iHigh; ++di)
+            {
+                const label b = wrapped
+                (
+                    FixedList<label, 3>
+                    ({coords_[p][0] + di, row, coords_[p][2] + dk})
+                );
+                if (b >= 0)
+                {
+                    bins.append(b);
+                }
+            }
+        }
+        std::sort(bins.begin(), bins.end());
+        const auto last = std::unique(bins.begin(), bins.end());
+        bins.setSize(last - bins.begin());
+    }
+};
+
+//- Whether the surfaces of p and q are closer than cutoff
+bool withinReach
+(
+    const fdm::periodicBox& box,
+    const UList<point>& positions,
+    const UList<scalar>& radii,
+    const scalar cutoff,
+    const label p,
+    const label q
+)
+{
+    const vector d = box.minimumImage(positions[q] - positions[p]);
+    const scalar reach = radii[p] + radii[q] + cutoff;
+    return magSqr(d) < sqr(reach);
+}
+
+} // namespace
+
+
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
 void Foam::fdm::findNearPairs
@@ -27,109 +169,20 @@ void Foam::fdm::findNearPairs
         return;
     }
 
-    const scalar binSize = 2*max(radii) + cutoff;
-
-    // Bins per direction; the bin index of a position outside the box along
-    // a non-periodic direction is clamped to the end bins.
-    FixedList<label, 3> nBins;
-    for (direction d = 0; d < 3; ++d)
-    {
-        nBins[d] = max(label(1), label(box.span()[d]/binSize));
-    }
-
-    auto binCoord = [&](const point& x, const direction d)
-    {
-        const label b = label((x[d] - box.min()[d])/box.span()[d]*nBins[d]);
-        return min(max(b, label(0)), nBins[d] - 1);
-    };
-    auto binIndex = [&](const label i, const label j, const label k)
-    {
-        return i + nBins[0]*(j + nBins[1]*k);
-    };
-
-    const label nTotal = nBins[0]*nBins[1]*nBins[2];
-    labelList head(nTotal, -1);
-    labelList next(n, -1);
-    List<FixedList<label, 3>> coords(n);
-
-    for (label p = 0; p < n; ++p)
-    {
-        for (direction d = 0; d < 3; ++d)
-        {
-            coords[p][d] = binCoord(positions[p], d);
-        }
-        const label b = binIndex(coords[p][0], coords[p][1], coords[p][2]);
-        next[p] = head[b];
-        head[b] = p;
-    }
-
+    const binGrid grid(box, positions, 2*max(radii) + cutoff);
     DynamicList<label> neighbourBins(27);
-
     for (label p = 0; p < n; ++p)
     {
-        // Neighbour bins of p's bin, wrapped across periodic directions and
-        // made unique (with fewer than three bins a wrap revisits a bin).
-        neighbourBins.clear();
-        for (label dk = -1; dk <= 1; ++dk)
-        for (label dj = -1; dj <= 1; ++dj)
-        {
-            // Across the y faces of a Lees-Edwards cell the neighbour row
-            // is the image shifted by the offset: its particles near x sit
-            // near x - k s in the row, so the x stencil moves by that many
-            // bins and widens by one to cover the fraction.
-            const label row = coords[p][1] + dj;
-            const label k = (row < 0) ? -1 : (row >= nBins[1]) ? 1 : 0;
-            label iLow = -1;
-            label iHigh = 1;
-            if (k != 0 && box.shearOffset() != 0)
-            {
-                const scalar shift =
-                    -k*box.shearOffset()/box.span()[0]*nBins[0];
-                iLow = label(std::floor(shift)) - 1;
-                iHigh = iLow + 3;
-            }
-        for (label di = iLow; di <= iHigh; ++di)
-        {
-            FixedList<label, 3> c({coords[p][0] + di, row,
-                                   coords[p][2] + dk});
-            bool valid = true;
-            for (direction d = 0; d < 3; ++d)
-            {
-                if (c[d] < 0 || c[d] >= nBins[d])
-                {
-                    if (box.periodic(d))
-                    {
-                        c[d] = ((c[d] % nBins[d]) + nBins[d]) % nBins[d];
-                    }
-                    else
-                    {
-                        valid = false;
-                    }
-                }
-            }
-            if (valid)
-            {
-                neighbourBins.append(binIndex(c[0], c[1], c[2]));
-            }
-        }
-        }
-        std::sort(neighbourBins.begin(), neighbourBins.end());
-        const auto last =
-            std::unique(neighbourBins.begin(), neighbourBins.end());
-        neighbourBins.setSize(last - neighbourBins.begin());
-
+        grid.neighbours(p, neighbourBins);
         for (const label b : neighbourBins)
         {
-            for (label q = head[b]; q != -1; q = next[q])
+            for (label q = grid.head(b); q != -1; q = grid.next(q))
             {
                 if (q <= p)
                 {
                     continue;
                 }
-                const vector d =
-                    box.minimumImage(positions[q] - positions[p]);
-                const scalar reach = radii[p] + radii[q] + cutoff;
-                if (magSqr(d) < sqr(reach))
+                if (withinReach(box, positions, radii, cutoff, p, q))
                 {
                     pairs.append(labelPair(p, q));
                 }
@@ -150,17 +203,39 @@ void Foam::fdm::findNearPairs
 }
 
 
+void Foam::fdm::selectNearPairs
+(
+    const periodicBox& box,
+    const UList<point>& positions,
+    const UList<scalar>& radii,
+    const scalar cutoff,
+    const UList<labelPair>& near,
+    DynamicList<labelPair>& pairs
+)
+{
+    pairs.clear();
+    for (const labelPair& pq : near)
+    {
+        if (withinReach(box, positions, radii, cutoff, pq.first(), pq.second()))
+        {
+            pairs.append(pq);
+        }
+    }
+}
+
+
 Foam::scalar Foam::fdm::smallestSurfaceGap
 (
     const periodicBox& box,
     const UList<point>& positions,
     const UList<scalar>& radii,
-    const scalar cutoff
+    const scalar cutoff,
+    const UList<labelPair>& near
 )
 {
     scalar smallest = cutoff;
     DynamicList<labelPair> pairs;
-    findNearPairs(box, positions, radii, cutoff, pairs);
+    selectNearPairs(box, positions, radii, cutoff, near, pairs);
     for (const labelPair& p : pairs)
     {
         const label i = p.first();

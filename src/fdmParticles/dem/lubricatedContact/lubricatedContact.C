@@ -192,67 +192,77 @@ Foam::vector Foam::fdm::lubricatedContact::surfaceVelocity
 }
 
 
-Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
+Foam::scalar Foam::fdm::lubricatedContact::normalStep
 (
     const lubricatedPairMotion& m,
     const scalar dt,
-    lubricatedPairState& state
+    lubricatedPairState& state,
+    lubricatedPairLoads& loads
 ) const
 {
-    const vector& n = m.normal;
+    // Implicit gap update (A.5-A.7), split at a contact change
     const scalar a = m.meanRadius;
     const scalar eps = roughness_;
     const scalar un = m.centreGap/a;
     const scalar kRatio = stiffnessRatio_;
 
-    lubricatedPairLoads loads;
-
-    // Normal: implicit gap update (A.5-A.7), split at a contact change
     scalar logU = state.logGap;
     scalar u = std::exp(logU);
+    bool contact = state.contact;
+    scalar remaining = dt*g_/(1.5*pi*viscosity_*a);
+    scalar dGapdUn = 0;
+
+    for (label pass = 0; pass < 3; ++pass)
     {
-        bool contact = state.contact;
-        scalar remaining = dt*g_/(1.5*pi*viscosity_*a);
-        scalar dGapdUn = 0;
-
-        for (label pass = 0; pass < 3; ++pass)
+        const scalar alpha = contact ? kRatio : 0;
+        scalar x;
+        const scalar logX = gapUpdate
+        (
+            logU, un, alpha*eps, alpha, remaining, x, dGapdUn
+        );
+        const bool contactNew = x < eps;
+        if (contactNew == contact || pass == 2)
         {
-            const scalar alpha = contact ? kRatio : 0;
-            scalar x;
-            const scalar logX = gapUpdate
-            (
-                logU, un, alpha*eps, alpha, remaining, x, dGapdUn
-            );
-            const bool contactNew = x < eps;
-            if (contactNew == contact || pass == 2)
-            {
-                logU = logX;
-                u = x;
-                break;
-            }
-
-            // Eq 20 (sign of F.2-2): the time at which u reaches eps
-            const scalar tc = (u - eps)/(eps*(eps - un));
-            if (!(tc > 0 && tc < remaining))
-            {
-                // Rounding at the threshold: redo the step in the new state
-                contact = contactNew;
-                continue;
-            }
-            logU = std::log(eps);
-            u = eps;
-            remaining -= tc;
-            contact = contactNew;
+            logU = logX;
+            u = x;
+            break;
         }
 
-        state.logGap = logU;
-        state.contact = u < eps;
-
-        const scalar kn = kRatio*g_;
-        loads.normalContact = -kn*a*max(scalar(0), eps - u);
-        loads.normalLubrication = g_*a*(un - u) - loads.normalContact;
-        loads.normalStiffness = g_*(1 - dGapdUn);
+        // Eq 20 (sign of F.2-2): the time at which u reaches eps
+        const scalar tc = (u - eps)/(eps*(eps - un));
+        if (!(tc > 0 && tc < remaining))
+        {
+            // Rounding at the threshold: redo the step in the new state
+            contact = contactNew;
+            continue;
+        }
+        logU = std::log(eps);
+        u = eps;
+        remaining -= tc;
+        contact = contactNew;
     }
+
+    state.logGap = logU;
+    state.contact = u < eps;
+
+    const scalar kn = kRatio*g_;
+    loads.normalContact = -kn*a*max(scalar(0), eps - u);
+    loads.normalLubrication = g_*a*(un - u) - loads.normalContact;
+    loads.normalStiffness = g_*(1 - dGapdUn);
+    return u;
+}
+
+
+void Foam::fdm::lubricatedContact::shearStep
+(
+    const lubricatedPairMotion& m,
+    const scalar dt,
+    lubricatedPairState& state,
+    lubricatedPairLoads& loads
+) const
+{
+    const vector& n = m.normal;
+    const scalar a = m.meanRadius;
 
     // Tangential: turn the stored force with the pair (A.8)
     vector Fs = state.shearForce;
@@ -303,6 +313,20 @@ Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
         }
     }
     state.shearForce = Fs;
+}
+
+
+Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
+(
+    const lubricatedPairMotion& m,
+    const scalar dt,
+    lubricatedPairState& state
+) const
+{
+    const scalar a = m.meanRadius;
+    lubricatedPairLoads loads;
+    const scalar u = normalStep(m, dt, state, loads);
+    shearStep(m, dt, state, loads);
 
     // Rolling and twisting resistance while u <= a (A.3)
     if (u <= 1)

@@ -37,29 +37,15 @@ void expectPunctuation
     }
 }
 
-} // namespace
 
-
-// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
-
-Foam::fdm::particleList Foam::fdm::readParticleList
+//- The stream of the inline list or of the particlesFile
+autoPtr<Istream> openParticleList
 (
     const dictionary& dict,
-    const fileName& constantDir
+    const fileName& constantDir,
+    const bool inlineList
 )
 {
-    const bool inlineList = dict.found("particles");
-    const bool fromFile = dict.found("particlesFile");
-    if (inlineList == fromFile)
-    {
-        FatalIOErrorInFunction(dict)
-            << dict.name() << " needs exactly one of the keywords"
-            << " 'particles' (inline list) and 'particlesFile' (file name"
-            << " relative to constant/)" << exit(FatalIOError);
-    }
-
-    // A number out of range is the parser's error, not a trap
-    fpTrapsOff trapsOff;
     autoPtr<Istream> isPtr;
     if (inlineList)
     {
@@ -77,11 +63,14 @@ Foam::fdm::particleList Foam::fdm::readParticleList
         }
         isPtr.reset(new IFstream(file));
     }
-    Istream& is = isPtr();
+    return isPtr;
+}
 
-    particleList list;
-    list.source = inlineList ? fileName(dict.name()) : is.name();
 
+//- Read the rows (group (x y z) radius) of the list into list; returns the
+//  count written before the list, -1 without one
+label readRows(Istream& is, fdm::particleList& list)
+{
     token first(is);
     label count = -1;
     if (first.isLabel())
@@ -120,7 +109,7 @@ Foam::fdm::particleList Foam::fdm::readParticleList
         is >> g >> x >> a;
         expectPunctuation(is, token::END_LIST, "at the end of a row");
 
-        if (!isFinite(a) || !isFinite(x))
+        if (!fdm::isFinite(a) || !fdm::isFinite(x))
         {
             FatalIOErrorInFunction(is)
                 << "Particle " << list.group.size() << " in " << is.name()
@@ -132,6 +121,39 @@ Foam::fdm::particleList Foam::fdm::readParticleList
         list.position.append(x);
         list.radius.append(a);
     }
+    return count;
+}
+
+
+} // namespace
+
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+Foam::fdm::particleList Foam::fdm::readParticleList
+(
+    const dictionary& dict,
+    const fileName& constantDir
+)
+{
+    const bool inlineList = dict.found("particles");
+    const bool fromFile = dict.found("particlesFile");
+    if (inlineList == fromFile)
+    {
+        FatalIOErrorInFunction(dict)
+            << dict.name() << " needs exactly one of the keywords"
+            << " 'particles' (inline list) and 'particlesFile' (file name"
+            << " relative to constant/)" << exit(FatalIOError);
+    }
+
+    // A number out of range is the parser's error, not a trap
+    fpTrapsOff trapsOff;
+    autoPtr<Istream> isPtr(openParticleList(dict, constantDir, inlineList));
+    Istream& is = isPtr();
+
+    particleList list;
+    list.source = inlineList ? fileName(dict.name()) : is.name();
+    const label count = readRows(is, list);
 
     if (count >= 0 && count != list.group.size())
     {

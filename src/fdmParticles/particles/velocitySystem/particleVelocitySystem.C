@@ -18,6 +18,117 @@ namespace
 typedef Eigen::SparseMatrix<double> sparseMatrix;
 typedef Eigen::Triplet<double> triplet;
 
+typedef Eigen::ConjugateGradient
+<
+    sparseMatrix,
+    Eigen::Lower|Eigen::Upper,
+    Eigen::IncompleteCholesky<double>
+> preconditionedCG;
+
+
+//- The matrix of the entries (rows, cols, values) with the prescribed
+//  unknowns eliminated: known columns go to the right-hand side b, their
+//  rows become identity rows (keeps the matrix SPD)
+sparseMatrix eliminatePrescribed
+(
+    const Foam::UList<Foam::label>& rows,
+    const Foam::UList<Foam::label>& cols,
+    const Foam::UList<Foam::scalar>& values,
+    const Foam::UList<Foam::scalar>& rhs,
+    const Foam::UList<bool>& prescribed,
+    const Foam::UList<Foam::scalar>& prescribedValue,
+    Eigen::VectorXd& b
+)
+{
+    using namespace Foam;
+    const label n = rhs.size();
+    b.resize(n);
+    for (label k = 0; k < n; ++k)
+    {
+        b[k] = prescribed[k] ? prescribedValue[k] : rhs[k];
+    }
+
+    std::vector<triplet> entries;
+    entries.reserve(values.size() + n);
+    forAll(values, e)
+    {
+        const label r = rows[e];
+        const label c = cols[e];
+        if (prescribed[r])
+        {
+            continue;
+        }
+        if (prescribed[c])
+        {
+            b[r] -= values[e]*prescribedValue[c];
+            continue;
+        }
+        entries.push_back(triplet(r, c, values[e]));
+    }
+    for (label k = 0; k < n; ++k)
+    {
+        if (prescribed[k])
+        {
+            entries.push_back(triplet(k, k, 1));
+        }
+    }
+
+    sparseMatrix A(n, n);
+    A.setFromTriplets(entries.begin(), entries.end());
+    return A;
+}
+
+
+//- Factorise A for cg; FatalError (and A written out) when it is not
+//  positive definite
+void factorise(const sparseMatrix& A, preconditionedCG& cg)
+{
+    using namespace Foam;
+    cg.compute(A);
+    // The incomplete factorisation can break down on an SPD matrix whose
+    // near-contact couplings almost cancel its diagonal (Eigen doubles its
+    // diagonal shift ten times from 1e-3 of the scaled diagonal, then gives
+    // up).  A larger shift changes the preconditioner only, not the
+    // solution; a matrix that still fails at a shift of 100 times its
+    // scaled diagonal is not positive definite.
+    for
+    (
+        scalar shift = 0.1;
+        cg.info() != Eigen::Success && shift < 1e3;
+        shift *= 10
+    )
+    {
+        cg.preconditioner().setInitialShift(shift);
+        cg.compute(A);
+    }
+    if (cg.info() != Eigen::Success)
+    {
+        // Keep the matrix for inspection (row col value, 0-based)
+        const fileName dump("particleSystem.failed");
+        if (Pstream::master())
+        {
+            OFstream os(dump);
+            os.precision(17);
+            for (int k = 0; k < A.outerSize(); ++k)
+            {
+                for (sparseMatrix::InnerIterator it(A, k); it; ++it)
+                {
+                    os << it.row() << ' ' << it.col() << ' ' << it.value()
+                        << nl;
+                }
+            }
+        }
+        FatalErrorInFunction
+            << "Incomplete-Cholesky factorisation of the particle system"
+            << " (thesis eq 2.43) failed: the matrix is not positive definite."
+            << " Written to " << dump << " (row col value): its"
+            << " eigenvector of negative eigenvalue names the particles; a"
+            << " negative implicit contact stiffness or a sub-grid table"
+            << " correcting beyond the exact resistance is the likely source."
+            << abort(FatalError);
+    }
+}
+
 } // namespace
 
 
@@ -120,41 +231,14 @@ Foam::fdm::particleVelocitySystem::solve
 {
     const label n = nDof*nParticles_;
 
-    // Eliminate prescribed unknowns: known columns go to the right-hand side,
-    // their rows become identity rows (keeps the matrix SPD).
     Eigen::VectorXd b(n);
-    for (label k = 0; k < n; ++k)
-    {
-        b[k] = prescribed_[k] ? prescribedValue_[k] : rhs_[k];
-    }
-
-    std::vector<triplet> entries;
-    entries.reserve(values_.size() + n);
-    forAll(values_, e)
-    {
-        const label r = rows_[e];
-        const label c = cols_[e];
-        if (prescribed_[r])
-        {
-            continue;
-        }
-        if (prescribed_[c])
-        {
-            b[r] -= values_[e]*prescribedValue_[c];
-            continue;
-        }
-        entries.push_back(triplet(r, c, values_[e]));
-    }
-    for (label k = 0; k < n; ++k)
-    {
-        if (prescribed_[k])
-        {
-            entries.push_back(triplet(k, k, 1));
-        }
-    }
-
-    sparseMatrix A(n, n);
-    A.setFromTriplets(entries.begin(), entries.end());
+    const sparseMatrix A
+    (
+        eliminatePrescribed
+        (
+            rows_, cols_, values_, rhs_, prescribed_, prescribedValue_, b
+        )
+    );
 
     Eigen::VectorXd x(n);
     for (label i = 0; i < nParticles_; ++i)
@@ -166,57 +250,10 @@ Foam::fdm::particleVelocitySystem::solve
         }
     }
 
-    Eigen::ConjugateGradient
-    <
-        sparseMatrix,
-        Eigen::Lower|Eigen::Upper,
-        Eigen::IncompleteCholesky<double>
-    > cg;
+    preconditionedCG cg;
     cg.setTolerance(tolerance);
     cg.setMaxIterations(maxIterations);
-    cg.compute(A);
-    // The incomplete factorisation can break down on an SPD matrix whose
-    // near-contact couplings almost cancel its diagonal (Eigen doubles its
-    // diagonal shift ten times from 1e-3 of the scaled diagonal, then gives
-    // up).  A larger shift changes the preconditioner only, not the
-    // solution; a matrix that still fails at a shift of 100 times its
-    // scaled diagonal is not positive definite.
-    for
-    (
-        scalar shift = 0.1;
-        cg.info() != Eigen::Success && shift < 1e3;
-        shift *= 10
-    )
-    {
-        cg.preconditioner().setInitialShift(shift);
-        cg.compute(A);
-    }
-    if (cg.info() != Eigen::Success)
-    {
-        // Keep the matrix for inspection (row col value, 0-based)
-        const fileName dump("particleSystem.failed");
-        if (Pstream::master())
-        {
-            OFstream os(dump);
-            os.precision(17);
-            for (int k = 0; k < A.outerSize(); ++k)
-            {
-                for (sparseMatrix::InnerIterator it(A, k); it; ++it)
-                {
-                    os << it.row() << ' ' << it.col() << ' ' << it.value()
-                        << nl;
-                }
-            }
-        }
-        FatalErrorInFunction
-            << "Incomplete-Cholesky factorisation of the particle system"
-            << " (thesis eq 2.43) failed: the matrix is not positive definite."
-            << " Written to " << dump << " (row col value): its"
-            << " eigenvector of negative eigenvalue names the particles; a"
-            << " negative implicit contact stiffness or a sub-grid table"
-            << " correcting beyond the exact resistance is the likely source."
-            << abort(FatalError);
-    }
+    factorise(A, cg);
 
     // Eigen counts the iterations completed before its convergence test,
     // so a solve converging in its first iteration reports 0; count the

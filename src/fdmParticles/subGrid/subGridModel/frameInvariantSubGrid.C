@@ -99,30 +99,13 @@ Foam::frameInvariantSubGrid::pairTable(const scalar lambda) const
 }
 
 
-// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
-
-Foam::frameInvariantSubGrid::frameInvariantSubGrid
+void Foam::frameInvariantSubGrid::readPairTables
 (
     const dictionary& dict,
-    const fvMesh& mesh,
     const settings& s,
-    const scalarField& radii
+    const scalar aSmall
 )
-:
-    subGridModel(mesh),
-    pairCutoff_(0),
-    wallCutoff_(0)
 {
-    fdm::checkKeywords
-    (
-        dict, {"model", "pairTables", "walls", "wallTable"},
-        "subGrid block, model frameInvariant"
-    );
-
-    // Tables are for a1 = 1 scaled by the particle radius; the smallest
-    // radius sets Delta/a1 (thesis: a1 = 1, Delta = a1/5)
-    const scalar aSmall = radii.empty() ? 1 : min(radii);
-
     const fileNameList pairFiles
     (
         dict.getOrDefault<fileNameList>
@@ -146,7 +129,17 @@ Foam::frameInvariantSubGrid::frameInvariantSubGrid
             pairCutoff_ = max(pairCutoff_, pairTables_[i].cutoff(f));
         }
     }
+}
 
+
+void Foam::frameInvariantSubGrid::readWallTable
+(
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const settings& s,
+    const scalar aSmall
+)
+{
     if (dict.getOrDefault<bool>("walls", true))
     {
         walls_.reset
@@ -177,7 +170,14 @@ Foam::frameInvariantSubGrid::frameInvariantSubGrid
             wallCutoff_ = max(wallCutoff_, wallTable_->cutoff(f));
         }
     }
+}
 
+
+void Foam::frameInvariantSubGrid::checkRatiosCovered
+(
+    const scalarField& radii
+) const
+{
     // Every radius ratio present needs its table: fail now, not mid-run
     scalarList distinct;
     for (const scalar a : radii)
@@ -202,6 +202,36 @@ Foam::frameInvariantSubGrid::frameInvariantSubGrid
             }
         }
     }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::frameInvariantSubGrid::frameInvariantSubGrid
+(
+    const dictionary& dict,
+    const fvMesh& mesh,
+    const settings& s,
+    const scalarField& radii
+)
+:
+    subGridModel(mesh),
+    pairCutoff_(0),
+    wallCutoff_(0)
+{
+    fdm::checkKeywords
+    (
+        dict, {"model", "pairTables", "walls", "wallTable"},
+        "subGrid block, model frameInvariant"
+    );
+
+    // Tables are for a1 = 1 scaled by the particle radius; the smallest
+    // radius sets Delta/a1 (thesis: a1 = 1, Delta = a1/5)
+    const scalar aSmall = radii.empty() ? 1 : min(radii);
+
+    readPairTables(dict, s, aSmall);
+    readWallTable(dict, mesh, s, aSmall);
+    checkRatiosCovered(radii);
 
     Info<< "Sub-grid lubrication: frameInvariant, " << pairTables_.size()
         << " pair table(s), " << (walls_ ? walls_->size() : 0)
@@ -211,11 +241,21 @@ Foam::frameInvariantSubGrid::frameInvariantSubGrid
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::scalar Foam::frameInvariantSubGrid::pairReach
+(
+    const scalarField& radii
+) const
+{
+    return pairCutoff_*max(radii);
+}
+
+
 void Foam::frameInvariantSubGrid::update
 (
     const pointField& positions,
     const scalarField& radii,
-    const fdm::periodicBox& box
+    const fdm::periodicBox& box,
+    const UList<labelPair>& near
 )
 {
     pairs_.clear();
@@ -223,9 +263,9 @@ void Foam::frameInvariantSubGrid::update
 
     // Pairs: xi = 2r/(a_p + a_q) - 2 below the largest cut-off, i.e. a
     // surface gap below pairCutoff (a_p + a_q)/2 <= pairCutoff a_max
-    DynamicList<labelPair> near;
-    fdm::findNearPairs(box, positions, radii, pairCutoff_*max(radii), near);
-    for (const labelPair& pq : near)
+    DynamicList<labelPair> close;
+    fdm::selectNearPairs(box, positions, radii, pairReach(radii), near, close);
+    for (const labelPair& pq : close)
     {
         // "1" is the smaller particle, lambda = a_2/a_1 >= 1
         const bool swap = radii[pq.second()] < radii[pq.first()];
@@ -316,9 +356,7 @@ void Foam::frameInvariantSubGrid::addHydrodynamics
     const List<vector>& U,
     const List<vector>& Omega,
     const scalar eta,
-    List<vector>& force,
-    List<vector>& torque,
-    List<symmTensor>& stresslet,
+    fdm::particleLoads& loads,
     List<scalar>& dipoleTrace
 ) const
 {
@@ -331,12 +369,12 @@ void Foam::frameInvariantSubGrid::addHydrodynamics
         const vector& W2 = Omega[e.q];
         vector F1, T1, F2, T2;
         e.matrix.forceTorque(U1, W1, U2, W2, F1, T1, F2, T2);
-        force[e.p] += eta*F1;
-        torque[e.p] += eta*T1;
-        force[e.q] += eta*F2;
-        torque[e.q] += eta*T2;
-        stresslet[e.p] += eta*e.matrix.stresslet(0, U1, W1, U2, W2);
-        stresslet[e.q] += eta*e.matrix.stresslet(1, U1, W1, U2, W2);
+        loads.force[e.p] += eta*F1;
+        loads.torque[e.p] += eta*T1;
+        loads.force[e.q] += eta*F2;
+        loads.torque[e.q] += eta*T2;
+        loads.stresslet[e.p] += eta*e.matrix.stresslet(0, U1, W1, U2, W2);
+        loads.stresslet[e.q] += eta*e.matrix.stresslet(1, U1, W1, U2, W2);
         dipoleTrace[e.p] += eta*e.matrix.dipoleTrace(0, U1, U2);
         dipoleTrace[e.q] += eta*e.matrix.dipoleTrace(1, U1, U2);
     }
@@ -344,9 +382,9 @@ void Foam::frameInvariantSubGrid::addHydrodynamics
     {
         vector F, T;
         e.matrix.forceTorque(U[e.p], Omega[e.p], e.wallVelocity, F, T);
-        force[e.p] += eta*F;
-        torque[e.p] += eta*T;
-        stresslet[e.p] +=
+        loads.force[e.p] += eta*F;
+        loads.torque[e.p] += eta*T;
+        loads.stresslet[e.p] +=
             eta*e.matrix.stresslet(U[e.p], Omega[e.p], e.wallVelocity);
         dipoleTrace[e.p] +=
             eta*e.matrix.dipoleTrace(U[e.p], e.wallVelocity);

@@ -3,21 +3,12 @@
 // and the check itself on small dictionaries.
 
 #include "checkKeywords.H"
-#include "IStringStream.H"
+#include "unitTestHelpers.H"
 #include <gtest/gtest.h>
 
 using namespace Foam;
 
-namespace
-{
-
-dictionary parse(const char* text)
-{
-    IStringStream is(text);
-    return dictionary(is);
-}
-
-} // namespace
+using unitTest::parse;
 
 
 TEST(editDistance, handCountedValues)

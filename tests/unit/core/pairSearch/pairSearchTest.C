@@ -59,7 +59,56 @@ void compareWithBruteForce(const fdm::periodicBox& box, const label n,
     }
 }
 
+// Smallest gap below cutoff from a neighbour list of twice the reach
+scalar smallestGap
+(
+    const fdm::periodicBox& box,
+    const List<point>& x,
+    const List<scalar>& a,
+    const scalar cutoff
+)
+{
+    DynamicList<labelPair> near;
+    fdm::findNearPairs(box, x, a, 2*cutoff, near);
+    return fdm::smallestSurfaceGap(box, x, a, cutoff, near);
+}
+
 } // namespace
+
+
+TEST(pairSearch, selectionFromALargerSearchIsTheSmallerSearch)
+{
+    // One search at the largest reach serves every interaction: selecting
+    // gives the pairs, in order, that a search at the smaller cutoff gives
+    const fdm::periodicBox box(point(0, -10, 0), point(20, 10, 20),
+        FixedList<bool, 3>({true, false, true}));
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<scalar> u01(0, 1);
+    List<point> x(600);
+    List<scalar> a(x.size());
+    forAll(x, i)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            x[i][d] = box.min()[d] + box.span()[d]*u01(gen);
+        }
+        a[i] = u01(gen) < 0.5 ? 1.0 : 1.4;
+    }
+    DynamicList<labelPair> wide, narrow, selected;
+    fdm::findNearPairs(box, x, a, 2, wide);
+    for (const scalar cutoff : {0.0, 5e-3, 0.3, 2.0})
+    {
+        fdm::findNearPairs(box, x, a, cutoff, narrow);
+        fdm::selectNearPairs(box, x, a, cutoff, wide, selected);
+        ASSERT_EQ(selected.size(), narrow.size()) << cutoff;
+        forAll(narrow, k)
+        {
+            EXPECT_EQ(selected[k], narrow[k]);
+        }
+    }
+    EXPECT_GT(narrow.size(), 0);
+    EXPECT_LT(narrow.size(), wide.size() + 1);
+}
 
 
 TEST(pairSearch, matchesBruteForceInAPeriodicChannel)
@@ -104,15 +153,15 @@ TEST(pairSearch, smallestSurfaceGapAcrossAPeriodicFaceAndToAWall)
     // gap 1.3 - 1 - 0.25 = 0.05; the second sphere 0.2 from the top wall
     List<point> x({point(0.5, 0, 5), point(19.2, 0, 5), point(10, 8.8, 10)});
     List<scalar> a({1, 0.25, 1});
-    EXPECT_NEAR(fdm::smallestSurfaceGap(box, x, a, 1), 0.05, 1e-12);
+    EXPECT_NEAR(smallestGap(box, x, a, 1), 0.05, 1e-12);
 
     x[2].y() = 8.96;
-    EXPECT_NEAR(fdm::smallestSurfaceGap(box, x, a, 1), 0.04, 1e-12);
+    EXPECT_NEAR(smallestGap(box, x, a, 1), 0.04, 1e-12);
 
     // Overlap is negative; nothing within the cut-off gives the cut-off
     x[1].x() = 19.6;
-    EXPECT_NEAR(fdm::smallestSurfaceGap(box, x, a, 1), -0.35, 1e-12);
+    EXPECT_NEAR(smallestGap(box, x, a, 1), -0.35, 1e-12);
     const List<point> far({point(5, 0, 5), point(15, 0, 15)});
     const List<scalar> unit({1, 1});
-    EXPECT_EQ(fdm::smallestSurfaceGap(box, far, unit, 0.5), 0.5);
+    EXPECT_EQ(smallestGap(box, far, unit, 0.5), 0.5);
 }

@@ -1,8 +1,18 @@
-// lubricatedDEMFoam: the particle state of restarts, <time>/particleState
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
 
-//- Continue from <startTime>/particleState; a start time other than 0
-//  without it is an error (the spheres would restart from the list)
-void readState(fdm::lubricatedDEM& dem, const Time& runTime)
+#include "demState.H"
+#include "Time.H"
+#include "IFstream.H"
+#include "OFstream.H"
+#include "OSspecific.H"
+#include "fpTrapsOff.H"
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+void Foam::fdm::readDEMState(lubricatedDEM& dem, const Time& runTime)
 {
     const fileName state = runTime.timePath()/"particleState";
     if (isFile(state))
@@ -26,10 +36,11 @@ void readState(fdm::lubricatedDEM& dem, const Time& runTime)
 }
 
 
-//- <time>/particleState: everything a restart needs, full precision;
-//  written under a temporary name and renamed into place, so a kill leaves
-//  either the whole file or none (setAsideIncompleteWrites)
-void writeState(const fdm::lubricatedDEM& dem, const Time& runTime)
+void Foam::fdm::writeDEMState
+(
+    const lubricatedDEM& dem,
+    const Time& runTime
+)
 {
     mkDir(runTime.timePath());
     const fileName file = runTime.timePath()/"particleState";
@@ -50,3 +61,6 @@ void writeState(const fdm::lubricatedDEM& dem, const Time& runTime)
     }
     mv(file + ".tmp", file);
 }
+
+
+// ************************************************************************* //
