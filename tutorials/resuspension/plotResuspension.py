@@ -1,5 +1,5 @@
 """Steady profiles of the viscous-resuspension tutorial against the
-suspension balance model (thesis 2, article 3; spec D).
+suspension balance model (thesis 2, article 3).
 
 For each case (one Shields number) the particleState files from strain
 --start on give the time-averaged volume fraction phi(z) of the mobile
@@ -16,7 +16,7 @@ Printed and written to resuspension.md, with resuspension.png:
     drag on spheres moving up while the bed still expands;
   - eta_ii(phi) recovered from the profile (eq 6) against eq 9, Boyer and
     Zarraga, in the bulk (phi/phi_m >= 0.3, more than 5 a below the top,
-    as the thesis discards the interface, spec D.6).
+    as the thesis discards the interface).
 
     plotResuspension.py CASE [CASE ...] [--start STRAIN]
 """
@@ -109,7 +109,7 @@ def read_case(case, start, dz):
 def bulk_shear_rate(r):
     """Shear rate of the bed: gammaDot (1 + d<u'_x>/dz) by least squares
     over the bins with phi > 0.1 between 2 a above the floor and 2 a below
-    the top (spec D.2 assumes it uniform and equal to the imposed one)."""
+    the top (article 3 assumes it uniform and equal to the imposed one)."""
     z, phi = r["z"], r["phi"]
     keep = (phi > 0.1) & (z > 2) & (z < top_height(z, phi) - 2)
     if r["component"] != 2 or keep.sum() < 3:

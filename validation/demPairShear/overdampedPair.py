@@ -10,7 +10,7 @@ this validation: it checks that lubricatedDEMFoam integrates its law (same
 minimum gaps and trajectories), and it evaluates variants cheaply -- the
 tangential arms (shearArms) and the drag torque of the thesis' two-sphere
 script.  That script (YADE examples/Lubrication/shearFlowTwoSpheres.py,
-spec appendix X) applies the torque -8 pi eta a^3 (2 pi omega - Omega_inf),
+its spin drag) applies the torque -8 pi eta a^3 (2 pi omega - Omega_inf),
 the spin multiplied by 2 pi: the spheres then turn at Omega_inf/(2 pi)
 instead of with the vorticity.  spin_drag_factor = 2 pi reproduces it.
 """
@@ -23,7 +23,7 @@ W_INF = np.array([0.0, 0.0, -0.5])
 
 
 def shear_lubrication(u):
-    """nu_t(u) of spec A.3 (eq 4), a = eta = 1."""
+    """nu_t(u) of article 1 (eq 4), a = eta = 1."""
     return PI / 2 * (-2 + (2 + u) * np.log((2 + u) / u))
 
 

@@ -80,7 +80,7 @@ def write(here, rows, law_rows, y_exit, eps_rough, cutoff, tol_traj,
         "Result: %s" % ("PASS" if ok_all else "FAIL"), "",
         "## The same law in the overdamped limit (overdampedPair.py)", "",
         "Force and torque balance at each configuration, no inertia, rigid "
-        "spheres.  Spin drag factor 1: the Stokes torque of spec B.2 "
+        "spheres.  Spin drag factor 1: the Stokes torque of article 1 "
         "(eq 41); 2 pi: the torque of the thesis' script, "
         "-8 pi eta a^3 (2 pi omega - Omega_inf), under which the spheres "
         "turn at 1/(2 pi) of the vorticity.", "",

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Validation: two spheres in simple shear with the lubricated contact model
-and Stokes drag (thesis 2, article 1, section 3.2; spec B.2).
+and Stokes drag (thesis 2, article 1, section 3.2).
 
 Each sphere (a = 1, viscosity 1, shear rate 1) feels the Stokes drag and
 torque against the ambient shear (eqs 40-41) and the pair interaction of

@@ -26,8 +26,8 @@ Sources / precision
 [CF]  M. Chaoui & F. Feuillebois, Q. J. Mech. Appl. Math. 56 (2003) 381-410.
       * small-gap expansions (their eq. 5.4-5.6, Tables 11 and 13):
         A = sum_j phi_j eps^j ln eps + f_j eps^j, etc.  These are the
-        coefficients already in src/python/fdmResistance/wall.py (spec
-        seed1-method.md sec. 10.3).  Used for eps <= EPS_SWITCH.
+        coefficients already in src/python/fdmResistance/wall.py (thesis
+        1 eq B.1).  Used for eps <= EPS_SWITCH.
       * Pade approximants in a/d (their eq. 5.1, Tables 9, 10, 12; numbers
         as transcribed in the optical tweezers toolbox, ott.drag.PadeSphere):
         used for eps > EPS_SWITCH.

@@ -1,5 +1,5 @@
 """Simple-shear rheology of lubricatedDEMFoam runs and the model of thesis 2
-(Chevremont 2020, article 2, eqs 13-16; spec seed2 C.3).
+(Chevremont 2020, article 2, eqs 13-16).
 
 The time series postProcessing/lubricatedDEM/<t0>/stress.dat holds the
 particle stress (compression < 0) split into normal contact (NC), shear
@@ -58,7 +58,8 @@ def model_eta(phi, phim):
 
 def model_lambda33(phi, phi_rcp=PHI_RCP):
     """lambda_33 = sigma_33/sigma_22 of article 3: the linear fit (eq 7)
-    and the smooth one (eq 8), independent of friction (spec C.6)."""
+    and the smooth one (eq 8), independent of friction (article 3,
+    section III.A)."""
     return 2.1 * (np.asarray(phi, float) - phi_rcp) + 1, lambda33(phi)
 
 
@@ -145,7 +146,7 @@ def series_averages(d, eta, rate, start_strain, blocks=5):
     out["mu"] = xy / P
     out["N1"] = block_mean((s["xx"] - s["yy"]) / scale, blocks)[0] / xy
     out["N2"] = block_mean((s["yy"] - s["zz"]) / scale, blocks)[0] / xy
-    # Normal stress ratios of article 3 (spec C.6): lambda_11 = s11/s22,
+    # Normal stress ratios of article 3 (section III.A): lambda_11 = s11/s22,
     # lambda_33 = s33/s22
     out["lambda11"] = block_mean(-s["xx"] / scale, blocks)[0] / P
     out["lambda33"] = block_mean(-s["zz"] / scale, blocks)[0] / P

@@ -1,7 +1,7 @@
 """Suspension balance model (SBM) predictions of steady volume-fraction
 profiles, with the normal-viscosity closures of the literature.
 
-Viscous resuspension (thesis 2, article 3, spec D.2): heavy particles
+Viscous resuspension (thesis 2, article 3, eqs 2-6): heavy particles
 sheared at a uniform rate gammaDot with gravity along direction i (2: the
 velocity gradient, 3: the vorticity) balance their weight with the
 particle normal stress sigma_ii = -eta_f gammaDot eta_ii(phi):
@@ -18,12 +18,12 @@ with phi_b the fraction on the floor and V the particle volume per unit
 floor area (in a): the floor carries the whole weight.  The top of the
 suspension is z(0), finite for the closures below (eta ~ phi^n, n >= 2).
 
-Closures (spec D.3-D.4), eta_ii = lambda_ii [r/(1 - r)]^n with r = phi/phi_m
-for the literature forms, and the new expressions of article 3:
+Closures (article 3, eqs 5-10), eta_ii = lambda_ii [r/(1 - r)]^n with
+r = phi/phi_m for the literature forms, and the new expressions of article 3:
     eta_22 = r^9/(1 - r)^2 + 150 r^10                       (eq 9)
     eta_33 = lambda_33(phi) eta_22,
     lambda_33 = (phi/phi_rcp)^7.5/(1e-3 + (phi/phi_rcp)^6)   (eq 8; eq 10 as
-                printed lacks the exponents, spec F.2-13)
+                printed lacks the exponents)
 
 Plane Poiseuille flow (thesis 1, appendix F): the shear stress is linear,
 |sigma_xy| = G |y|, and with the normal stress ratio
@@ -57,8 +57,8 @@ def zarraga(phi, component=2, phim=0.62):
 
 
 def boyer(phi, component=2, phim=0.585):
-    """Boyer et al. (2011), n = 2: lambda_22 = 1 (sigma_22 = P_p, spec
-    D.3), lambda_33 = 0.6."""
+    """Boyer et al. (2011), n = 2: lambda_22 = 1 (sigma_22 = P_p,
+    article 3 eq 5), lambda_33 = 0.6."""
     lam = {2: 1.0, 3: 0.6}[component]
     r = _ratio(phi, phim)
     return lam * (r / (1 - r))**2

@@ -1,5 +1,5 @@
-"""Unit tests: the thesis 2 rheology model against the values tabulated in
-the spec (seed2 C.3, computed there from eqs 13-16)."""
+"""Unit tests: the thesis 2 rheology model (article 2, eqs 13-16) against
+its values at three and four significant figures."""
 
 import unittest
 
@@ -16,7 +16,7 @@ class ThesisModel(unittest.TestCase):
             self.assertAlmostEqual(phi_m(mu), ref, delta=1e-4)
 
     def test_lambda33_fits(self):
-        # spec C.6 table of eqs 7 and 8 (3 decimals)
+        # article 3, eqs 7 and 8, at 3 decimals
         for phi, eq7, eq8 in ((0.25, 0.181, 0.191), (0.40, 0.496, 0.486),
                               (0.50, 0.706, 0.688), (0.64, 1.000, 0.999)):
             l7, l8 = model_lambda33(phi)
@@ -24,10 +24,10 @@ class ThesisModel(unittest.TestCase):
             self.assertAlmostEqual(float(l8), eq8, delta=6e-4)
 
     def test_mu_and_eta_of_iv(self):
-        # I_v, mu total and eta_r at phi_m = 0.63 (spec table)
+        # I_v, mu total and eta_r at phi_m = 0.63 (article 2, eqs 13-16)
         for iv, mu, eta in ((1e-3, 0.3944, 394.4), (1e-2, 0.5898, 58.98),
                             (1e-1, 1.1698, 11.70), (1.0, 3.271, 3.27)):
-            # the spec rounds to 4 significant figures
+            # the values are rounded to 4 significant figures
             self.assertAlmostEqual(model_mu(iv, 0.63) / mu, 1, delta=3e-4)
             phi = 0.63 / (1 + iv ** 0.5)
             self.assertAlmostEqual(viscous_number(phi, 0.63), iv,

@@ -1,5 +1,5 @@
-"""Unit tests of fdmPost.suspensionBalance: the closures against the values
-tabulated in spec D.4 (3 significant figures), the resuspension profile
+"""Unit tests of fdmPost.suspensionBalance: the closures against their
+values at 3 significant figures (article 3, eqs 5-10), the resuspension profile
 against the closed form of a quadratic closure and against eq 3 itself,
 the eq 6 inversion, the Poiseuille zero-flux profile against its
 closed form for a linear closure, and the Poiseuille migration (eq F.8b)
@@ -21,7 +21,7 @@ def quadratic(phi, component=2, phim=2.0):
 class Closures(unittest.TestCase):
 
     def test_spec_table_values(self):
-        # spec D.4 table (phi_m = 0.58 for eq 9; each literature form with
+        # article 3 closures (phi_m = 0.58 for eq 9; each literature form with
         # its own phi_m), three significant figures
         cases = [
             (sbm.chevremont, 2, 0.174, 9.26e-4), (sbm.chevremont, 2, 0.290, 0.154),
@@ -40,7 +40,7 @@ class Closures(unittest.TestCase):
                                    0.375 / 0.38, delta=6e-3, msg=f"MB {phi}")
 
     def test_lambda33_limits(self):
-        # spec D.5: about 0.2 at phi = 0.25, about 1 at phi_rcp
+        # article 3, eqs 7-8: about 0.2 at phi = 0.25, about 1 at phi_rcp
         self.assertAlmostEqual(float(sbm.lambda33(0.25)), 0.2, delta=0.05)
         self.assertAlmostEqual(float(sbm.lambda33(0.64)), 1.0, delta=0.01)
 

@@ -249,16 +249,9 @@ def single_layer(surfaces, near_factor=3.0, chunk=256):
 # --------------------------------------------------------------------------
 # mobility problem
 # --------------------------------------------------------------------------
-def free_spheres(spheres, walls, ambient, level=3, beta=0.5, half_width=None):
-    """Velocities, angular velocities and stresslets of force- and torque-free
-    spheres between plane walls in an ambient flow.
-
-    spheres: list of (centre (3,), radius); walls: list of wall heights y;
-    ambient(x) -> u_inf (m, 3), a Stokes flow satisfying the wall
-    conditions.  Returns dict U (ns, 3), Omega (ns, 3), S (ns, 3, 3),
-    elements (count)."""
-    cs = [np.asarray(c, float) for c, _ in spheres]
-    rs = [r for _, r in spheres]
+def _discretise(cs, rs, walls, level, beta, half_width):
+    """Surfaces of the spheres (centres cs, radii rs) and of the walls,
+    refined towards the gaps; sphere surfaces first."""
     mid = np.mean(cs, axis=0)
     if len(walls) > 1:
         # channel: disturbances decay over the width H, so walls of half
@@ -292,6 +285,20 @@ def free_spheres(spheres, walls, ambient, level=3, beta=0.5, half_width=None):
             np.maximum(dist_to_spheres(x), h_sphere / beta), cap / beta),
             beta, max_passes=40)
         surfaces.append(w)
+    return surfaces
+
+
+def free_spheres(spheres, walls, ambient, level=3, beta=0.5, half_width=None):
+    """Velocities, angular velocities and stresslets of force- and torque-free
+    spheres between plane walls in an ambient flow.
+
+    spheres: list of (centre (3,), radius); walls: list of wall heights y;
+    ambient(x) -> u_inf (m, 3), a Stokes flow satisfying the wall
+    conditions.  Returns dict U (ns, 3), Omega (ns, 3), S (ns, 3, 3),
+    elements (count)."""
+    cs = [np.asarray(c, float) for c, _ in spheres]
+    surfaces = _discretise(cs, [r for _, r in spheres], walls, level, beta,
+                           half_width)
     A, xs, areas = single_layer(surfaces)
     n = len(xs)
     ns = len(spheres)

@@ -22,10 +22,6 @@ sum_m (c_m - g1 - 2g2/m + 4g3/(m(m+2))) t^m converges absolutely at t = 1, so
 the same expression is accurate for every xi > 0 (far field and near contact);
 no switching between a far-field series and a lubrication formula is needed.
 
-X^C (rotation about the line of centres) is computed exactly from the rotlet
-image series (each rotlet has a single rotlet image in the other sphere,
-strength -(a/D)^3 at the inverse point), which converges for every xi > 0.
-
 Implementation notes
 --------------------
 The recurrences are evaluated numerically for a given lambda, collapsing the
@@ -42,17 +38,9 @@ the reference table data/resistance/reference (Townsend / Wilson): A by
 6 pi a1, B and G by 4 pi a1^2, C and H by 8 pi a1^3, for both the 11 and the 12
 rows (the pressure moments X12P, X21P, not in the reference: by 4 pi a1^2),
 viscosity eta = 1, sign convention F = -eta R.U (X11A > 0, X12A < 0).
-``base(name, xi, lam)`` returns the ten dimensional base functions of the
-sub-grid method (a1 = 1, eta = 1), "21" meaning the force/torque/stresslet on
-sphere 2 due to the motion of sphere 1:
-
-    XA21 = 6 pi X12A^(lam)           YA21 = 6 pi Y12A^(lam)
-    YB21 = -4 pi lam^2 Y12B^(1/lam)  XC21 = 8 pi X12C^(lam)
-    YC11 = 8 pi Y11C^(lam)           XG11 = 4 pi X11G^(lam)
-    YG11 = 4 pi Y11G^(lam)           YH21 = 8 pi lam^3 Y12H^(1/lam)
-    XP12 = 4 pi X12P^(lam)           XP21 = 4 pi X21P^(lam)
-
-(relabelling the spheres reverses d, hence the minus sign for B, G, P.)
+The dimensional base functions of the sub-grid method built from them are
+in subGridBase; X^C comes from rotletImages, the near-contact coefficients
+from nearContact.
 
 Pressure moments X^P
 --------------------
@@ -74,9 +62,9 @@ from JMB's recurrences:
   motion of sphere b itself (X21P, X12P), odd m to sphere a's (X11P, X22P,
   not exported).
 The coefficients approach g1 + 2g2/m - 4g3/(m(m+2)) with exactly the g of
-the thesis near-contact forms (spec 10.1; residual ~1e-7 at m = 240), so the
+the near-contact forms of thesis 1 eq B.1 (residual ~1e-7 at m = 240), so the
 singular terms are summed in closed form as for the other functions and the
-O(1) constants P12X, P21X follow (contact_constant / base_constant).
+O(1) constants P12X, P21X follow (contact_constant, subGridBase).
 Independent check (test_resistance.py): a least-squares boundary-collocation
 solution with Lamb's harmonics about both centres and the trace integrated
 over the surface agrees to < 2e-7 for xi = 0.01 .. 3; extrapolating its
@@ -89,6 +77,9 @@ import math
 from functools import lru_cache
 
 import numpy as np
+
+from .nearContact import coefficients
+from .rotletImages import xc_hat
 
 XP_CONSTANT_KNOWN = True   # X^P series exact, O(1) constants determined
 
@@ -273,48 +264,6 @@ def _xp_coeffs(fun, lam, K=KMAX):
     return fac * c
 
 
-# ---------------------------------------------------------------------------
-# near-contact coefficients g1, g2, g3 (Jeffrey & Onishi 1984, Jeffrey 1992,
-# as corrected by Townsend 2018), in the hat normalisation of the 11 rows
-# (for 12 rows the same g multiply the series; see _SPEC)
-# ---------------------------------------------------------------------------
-
-def _g(name, l):
-    p3 = (1 + l) ** 3
-    p2 = (1 + l) ** 2
-    p1 = 1 + l
-    if name == "XA":
-        return (2 * l**2 / p3, l * (1 + 7 * l + l**2) / (5 * p3),
-                (1 + 18 * l - 29 * l**2 + 18 * l**3 + l**4) / (42 * p3))
-    if name == "YA":
-        return (0.0, 4 * l * (2 + l + 2 * l**2) / (15 * p3),
-                2 * (16 - 45 * l + 58 * l**2 - 45 * l**3 + 16 * l**4) / (375 * p3))
-    if name == "YB":
-        return (0.0, -l * (4 + l) / (5 * p2),
-                -(32 - 33 * l + 83 * l**2 + 43 * l**3) / (250 * p2))
-    if name == "YC11":
-        return (0.0, 2 * l / (5 * p1), (8 + 6 * l + 33 * l**2) / (125 * p1))
-    if name == "YC12":
-        return (0.0, l**2 / (10 * p1), l * (43 - 24 * l + 43 * l**2) / (500 * p1))
-    if name == "XG":
-        return (3 * l**2 / p3, 3 * (l + 12 * l**2 - 4 * l**3) / (10 * p3),
-                (5 + 181 * l - 453 * l**2 + 566 * l**3 - 65 * l**4) / (140 * p3))
-    if name == "YG":
-        return (0.0, (4 * l - l**2 + 7 * l**3) / (10 * p3),
-                (32 - 179 * l + 532 * l**2 - 356 * l**3 + 221 * l**4) / (500 * p3))
-    if name == "YH11":
-        return (0.0, (2 * l - l**2) / (10 * p2),
-                (16 - 61 * l + 180 * l**2 + 2 * l**3) / (500 * p2))
-    if name == "YH12":
-        return (0.0, (l**2 + 7 * l**3) / (20 * p2),
-                (43 * l + 147 * l**2 - 185 * l**3 + 221 * l**4) / (1000 * p2))
-    if name == "XP21":   # thesis forms (spec 10.1) / (4 pi a1^2)
-        return tuple(x / (4 * PI) for x in _xp_singular("XP21", l))
-    if name == "XP12":   # the series carries sign -1 (see _SPEC)
-        return tuple(-x / (4 * PI) for x in _xp_singular("XP12", l))
-    raise KeyError(name)
-
-
 # hat function -> (coefficient series, g-set, parity, sign, include c0)
 _SPEC = {
     "X11A": ("XA", "XA", 0, +1, True),
@@ -352,7 +301,7 @@ def _closed_sums(xi, parity):
 def _residual_coeffs(name, lam, K=KMAX):
     fun, gname, par, sign, c0 = _SPEC[name]
     c = _coeffs(fun, lam, K)
-    g1, g2, g3 = _g(gname, lam)
+    g1, g2, g3 = coefficients(gname, lam)
     m = np.arange(K + 1, dtype=float)
     mm = np.where(m > 0, m, 1.0)
     e = c - g1 - 2 * g2 / mm + 4 * g3 / (mm * (mm + 2))
@@ -382,7 +331,7 @@ def hat(name, xi, lam, K=KMAX, tail=True):
     """Dimensionless scalar `name` (e.g. 'X11A', 'Y12H', 'X12C') at gap xi."""
     xi = np.asarray(xi, dtype=float)
     if name in ("X11C", "X12C"):
-        return _xc_hat(name, xi, lam)
+        return xc_hat(name, xi, lam)
     fun, gname, par, sign, inc0 = _SPEC[name]
     c, e, sel, (g1, g2, g3) = _residual_coeffs(name, lam, K)
     t = 2.0 / (2.0 + xi)
@@ -406,7 +355,7 @@ def singular(name, lam):
     if name == "X12C":
         return (0.0, 0.0, lam**2 / (4 * (1 + lam)))
     fun, gname, par, sign, inc0 = _SPEC[name]
-    g = _g(gname, lam)
+    g = coefficients(gname, lam)
     return tuple(sign * x for x in g)
 
 
@@ -429,97 +378,3 @@ def contact_constant(name, lam, K=KMAX):
     if inc0:
         val += c[0]
     return float(sign * val)
-
-
-def base_constant(name, lam):
-    """O(1) constant of the near-contact form of a base function
-    (dimensional)."""
-    hname, inv, fac = BASE[name]
-    ll = 1.0 / lam if inv else lam
-    return fac(lam) * contact_constant(hname, ll)
-
-
-# ---------------------------------------------------------------------------
-# X^C : rotlet images
-# ---------------------------------------------------------------------------
-
-def _xc_hat(name, xi, lam, nimg=200000):
-    xi = np.atleast_1d(np.asarray(xi, dtype=float))
-    out = np.empty_like(xi)
-    for i, x in enumerate(xi):
-        R = (1.0 + lam) * (2.0 + x) / 2.0   # centre distance, a1 = 1
-        a = (1.0, lam)
-        # rotlet: owner sphere index, position along axis from centre 1
-        pos, S, own = 0.0, 1.0, 0           # sphere 1 rotates, strength a1^3
-        tot = [1.0, 0.0]
-        for it in range(nimg):
-            other = 1 - own
-            c = 0.0 if other == 0 else R
-            D = abs(pos - c)
-            ai = a[other]
-            S = -S * (ai / D) ** 3
-            pos = c + (ai * ai / D) * (1.0 if pos > c else -1.0)
-            own = other
-            tot[own] += S
-            if abs(S) < 1e-17 * abs(tot[0]):
-                break
-        out[i] = tot[0] if name == "X11C" else tot[1]
-    return out.reshape(np.shape(xi)) if out.size > 1 else out
-
-
-# ---------------------------------------------------------------------------
-# dimensional base functions of the sub-grid method (a1 = 1, eta = 1)
-# ---------------------------------------------------------------------------
-
-PI = math.pi
-
-
-def _xp_singular(name, lam):
-    """Singular terms of the near-contact X^P forms of spec section 10.1
-    (Jeffrey, Morris & Brady 1993), dimensional (a1 = 1).  The series of
-    _xp_coeffs reproduces them (test_residual_coefficients_decay)."""
-    A = PI * (1 + lam) ** 2
-    if name == "XP12":
-        l = lam
-        return (A * (-12 * l**2 / (1 + l) ** 5),
-                A * (-12 * (l - 4 * l**2) / (10 * (1 + l) ** 4)),
-                A * (-4 * (5 - 97 * l + 64 * l**2 - 44 * l**3 + l**4)
-                     / (140 * (1 + l) ** 4)))
-    m = 1.0 / lam
-    return (A * (12 * m**2 / (1 + m) ** 5),
-            A * (12 * (m - 4 * m**2) / (10 * (1 + m) ** 4)),
-            A * (4 * (5 - 97 * m + 64 * m**2 - 44 * m**3 + m**4)
-                 / (140 * (1 + m) ** 4)))
-
-
-# name -> (hat name, lambda transform (False: lam, True: 1/lam), factor(lam))
-BASE = {
-    "XA21": ("X12A", False, lambda l: 6 * PI),
-    "YA21": ("Y12A", False, lambda l: 6 * PI),
-    "YB21": ("Y12B", True, lambda l: -4 * PI * l**2),
-    "XC21": ("X12C", False, lambda l: 8 * PI),
-    "YC11": ("Y11C", False, lambda l: 8 * PI),
-    "XG11": ("X11G", False, lambda l: 4 * PI),
-    "YG11": ("Y11G", False, lambda l: 4 * PI),
-    "YH21": ("Y12H", True, lambda l: 8 * PI * l**3),
-    "XP12": ("X12P", False, lambda l: 4 * PI),
-    "XP21": ("X21P", False, lambda l: 4 * PI),
-}
-BASE_ORDER = ["XA21", "YA21", "YB21", "XC21", "YC11", "XG11", "YG11",
-              "YH21", "XP12", "XP21"]
-
-
-def base_singular(name, lam):
-    """Singular coefficients (of 1/xi, ln(1/xi), xi ln(1/xi)) of a base
-    function, dimensional."""
-    hname, inv, fac = BASE[name]
-    ll = 1.0 / lam if inv else lam
-    return tuple(fac(lam) * g for g in singular(hname, ll))
-
-
-def base(name, xi, lam):
-    """Dimensional base function (a1 = 1, eta = 1) at gap xi."""
-    hname, inv, fac = BASE[name]
-    xi = np.asarray(xi, dtype=float)
-    ll = 1.0 / lam if inv else lam
-    return fac(lam) * hat(hname, xi, ll)

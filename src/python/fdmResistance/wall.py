@@ -2,9 +2,9 @@
 
 Gap variable: eps = h/a - 1 (h: distance centre-wall).  Tensor forms as for
 the (11) pair tensors with d = unit normal pointing INTO the wall
-(spec section 9.4); sign convention F = -eta R.U (X^A, Y^A, X^C, Y^C > 0).
+(thesis 1, appendix A); sign convention F = -eta R.U (X^A, Y^A, X^C, Y^C > 0).
 
-* Lubrication forms (spec section 10.2, compilation of Yeo & Maxey 2010;
+* Lubrication forms (thesis 1 eq B.2, compilation of Yeo & Maxey 2010;
   X^G, X^P from the pair forms with lambda -> inf, constants of Jeffrey 1992
   at lambda = 100 as chosen in the thesis):
       X^A/(6 pi)  =  1/eps + (1/5) ln(1/eps) + (1/21) eps ln(1/eps) + 0.8193
@@ -17,7 +17,7 @@ the (11) pair tensors with d = unit normal pointing INTO the wall
       Y^G/(4 pi)  =  (7/10) ln(1/eps) + (221/250) eps ln(1/eps) - 0.923
       Y^H/(8 pi)  = -(1/10) ln(1/eps) + (2/250) eps ln(1/eps) + 0.0916
   valid for eps <~ 0.01 (only the singular terms are exact).
-* Chaoui & Feuillebois (2003) expansions (spec section 10.3) for Y^A, Y^B,
+* Chaoui & Feuillebois (2003) expansions (thesis 1 eq B.1) for Y^A, Y^B,
   Y^C, note ln(eps) not ln(1/eps):
       Y^A/(6 pi)  = sum_j phi_j eps^j ln eps + f_j eps^j
       Y^B/(-8 pi) = sum_j gam_j eps^j ln eps + c_j eps^j

@@ -18,6 +18,7 @@ import sys
 
 import numpy as np
 
+from . import subGridBase as sg
 from . import twoSphere as ts
 from . import wall
 
@@ -42,7 +43,7 @@ def _sing(g, x):
 
 
 def pair_function(name, lam, x):
-    return ts.base(name, x, lam)
+    return sg.base(name, x, lam)
 
 
 def pair_table(lam, grid):
@@ -50,12 +51,12 @@ def pair_table(lam, grid):
     out = {}
     worst = {}
     xm = np.sqrt(grid[1:-1] * grid[2:])          # (geometric) mid-points
-    for name in ts.BASE_ORDER:
-        g = ts.base_singular(name, lam)
+    for name in sg.BASE_ORDER:
+        g = sg.base_singular(name, lam)
         f = pair_function(name, lam, grid[1:])
         rem = np.empty_like(grid)
         rem[1:] = f - _sing(g, grid[1:])
-        rem[0] = ts.base_constant(name, lam)
+        rem[0] = sg.base_constant(name, lam)
         out[name] = (g, rem)
         fm = pair_function(name, lam, xm)
         fi = _sing(g, xm) + np.interp(xm, grid, rem)
@@ -105,7 +106,7 @@ PAIR_HEADER = """\
 // XP12 = 4pi X12P^(l), XP21 = 4pi X21P^(l): pressure moments (trace of the
 // force dipole, s_a = -eta XP_ab d.U_b), exact: s_a = -4pi a_a^3 p_b(x_a) with
 // p_b from the same X^A twin-multipole solution; singular part = thesis forms
-// (spec 10.1, Jeffrey, Morris & Brady 1993), remainder(0) = P12X, P21X times
+// (eq B.1, Jeffrey, Morris & Brady 1993), remainder(0) = P12X, P21X times
 // pi (1+l)^2; checked against boundary collocation to < 2e-7.
 // Interpolation check (max rel. error of f at grid mid-points): %s
 """
@@ -116,7 +117,7 @@ WALL_HEADER = """\
 // YA, YB, YC: Chaoui & Feuillebois (2003) expansions (singular part = their
 // j = 0, 1 logarithmic terms; remainder = all other terms).  YB carries the
 // sign of the lubrication form Y^B/(4pi) = -(3/15) ln(1/eps) + ...
-// XA, XC, XG, XP: lubrication forms (spec 10.2; XP constant -0.552*4pi and XG
+// XA, XC, XG, XP: lubrication forms (eq B.2; XP constant -0.552*4pi and XG
 // constant 0.3912*4pi from the thesis, not independently verified).
 // Interpolation check (max rel. error of f at grid mid-points): %s
 """

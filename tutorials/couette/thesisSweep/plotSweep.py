@@ -1,12 +1,12 @@
 #!/usr/bin/python3
 """Core rheology of every run/phi*/ case of the Couette sweep against the
-thesis fit and the spec's closures (thesis 1, section 4.2.2):
+thesis fit and the published closures (thesis 1, section 4.2.2):
 
   eta_core(phi_core) against Maron-Pierce eta = 0.803/(1 - phi/0.59)^2
   (eq 4.12, the thesis' own fit to its data);
   N1/Sigma12, N2/Sigma12 and the contact share against phi/phi_J with the
   Morris & Boulay (1999) closures as a cross-check (the Badia et al. 2022
-  laws the thesis plots are not in the spec).
+  laws the thesis plots are not reproduced).
 
     plotSweep.py [--start STRAIN]
 
