@@ -13,7 +13,7 @@
 #    periodic box (accelerated)
 # Checks in checkPeriodicArray.py.
 source "${0%/*}/caseTestFunctions"
-source "$FDM_PROJECT_DIR/validation/periodicArrayDrag/caseSetup"
+source "$caseTemplates/periodicArraySetup"
 
 work=$(caseWorkDir periodicArrayDrag)
 # Cell centre 4.1 plus offsets (1/8, 3/8, -1/8) Delta

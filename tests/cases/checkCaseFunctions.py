@@ -7,8 +7,7 @@ import tempfile
 import unittest
 
 FUNCTIONS = os.path.join(os.path.dirname(os.path.abspath(__file__)),
-                         os.pardir, os.pardir, os.pardir, "etc",
-                         "caseFunctions")
+                         os.pardir, os.pardir, "etc", "caseFunctions")
 
 
 def touch(path):
