@@ -10,6 +10,7 @@ Description
 
 #include "fdmParticleCloud.H"
 #include "lagrangianCloudWriter.H"
+#include "particleStateFile.H"
 #include "particleVTKWriter.H"
 #include "OFstream.H"
 #include "OSspecific.H"
@@ -104,56 +105,34 @@ void Foam::fdmParticleCloud::writeState() const
     checkFinite();
 
     const Time& runTime = mesh_.time();
-    const fileName dir = runTime.globalPath()/runTime.timeName();
-    mkDir(dir);
-
-    // Written under a temporary name and renamed: a kill leaves either no
-    // particleState or a whole one
-    const fileName tmp = dir/"particleState.tmp";
-    {
-        OFstream os(tmp);
-        // Full precision: a restart must continue the same trajectory
-        os.precision(17);
-        IOobject io
-        (
-            "particleState",
-            runTime.timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        );
-        io.writeHeader(os, "dictionary");
-
-        os.writeEntry("nParticles", size());
-        os.writeEntry("solved", solved_);
-        os.writeEntry("hasHistory", hasHistory_);
-        os.writeEntry("radius", state_.radius);
-        os.writeEntry("position", state_.position);
-        os.writeEntry("velocity", state_.U);
-        os.writeEntry("angularVelocity", state_.Omega);
-        os.writeEntry("previousVelocity", state_.Uold);
-        os.writeEntry("force", hydro_.force);
-        os.writeEntry("torque", hydro_.torque);
-        os.writeEntry("stresslet", hydro_.stresslet);
-        os.writeEntry("dipoleTrace", dipoleTrace_);
-        if (contacts_)
+    fdm::writeParticleStateFile
+    (
+        runTime.globalPath()/runTime.timeName(),
+        runTime.timeName(),
+        mesh_,
+        [&](Ostream& os)
         {
-            os.writeEntry("contactForce", contact_.force);
-            os.writeEntry("contactTorque", contact_.torque);
-            os.writeEntry("contactStresslet", contact_.stresslet);
-            contacts_->writeState(os);
+            os.writeEntry("nParticles", size());
+            os.writeEntry("solved", solved_);
+            os.writeEntry("hasHistory", hasHistory_);
+            os.writeEntry("radius", state_.radius);
+            os.writeEntry("position", state_.position);
+            os.writeEntry("velocity", state_.U);
+            os.writeEntry("angularVelocity", state_.Omega);
+            os.writeEntry("previousVelocity", state_.Uold);
+            os.writeEntry("force", hydro_.force);
+            os.writeEntry("torque", hydro_.torque);
+            os.writeEntry("stresslet", hydro_.stresslet);
+            os.writeEntry("dipoleTrace", dipoleTrace_);
+            if (contacts_)
+            {
+                os.writeEntry("contactForce", contact_.force);
+                os.writeEntry("contactTorque", contact_.torque);
+                os.writeEntry("contactStresslet", contact_.stresslet);
+                contacts_->writeState(os);
+            }
         }
-        IOobject::writeEndDivider(os);
-        os.flush();
-        if (!os.good())
-        {
-            FatalErrorInFunction
-                << "Cannot write " << tmp << " (disk full?)"
-                << exit(FatalError);
-        }
-    }
-    mv(tmp, dir/"particleState");
+    );
 }
 
 

@@ -11,7 +11,7 @@ Description
 
 #include "fdmParticleCloud.H"
 #include "particleList.H"
-#include "IFstream.H"
+#include "particleStateFile.H"
 #include "OSspecific.H"
 #include "checkKeywords.H"
 
@@ -174,10 +174,7 @@ void Foam::fdmParticleCloud::readState()
     }
 
     Info<< "    continuing from " << file << nl;
-    fdm::fpTrapsOff trapsOff;
-    IFstream is(file);
-    const dictionary state(is);
-    trapsOff.restore();
+    const dictionary state(fdm::readParticleStateFile(file));
 
     const label n = state.get<label>("nParticles");
     if (n != size())

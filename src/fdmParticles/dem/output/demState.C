@@ -4,11 +4,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demState.H"
+#include "particleStateFile.H"
 #include "Time.H"
-#include "IFstream.H"
-#include "OFstream.H"
 #include "OSspecific.H"
-#include "fpTrapsOff.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -18,11 +16,7 @@ void Foam::fdm::readDEMState(lubricatedDEM& dem, const Time& runTime)
     if (isFile(state))
     {
         Info<< "Continuing from " << state << nl;
-        fdm::fpTrapsOff trapsOff;
-        IFstream is(state);
-        const dictionary dict(is);
-        trapsOff.restore();
-        dem.readState(dict);
+        dem.readState(readParticleStateFile(state));
     }
     else if (runTime.value() != 0)
     {
@@ -42,24 +36,13 @@ void Foam::fdm::writeDEMState
     const Time& runTime
 )
 {
-    mkDir(runTime.timePath());
-    const fileName file = runTime.timePath()/"particleState";
-    {
-        OFstream os(file + ".tmp");
-        os.precision(17);
-        IOobject io
-        (
-            "particleState",
-            runTime.timeName(),
-            runTime,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        );
-        io.writeHeader(os, "dictionary");
-        dem.writeState(os);
-    }
-    mv(file + ".tmp", file);
+    writeParticleStateFile
+    (
+        runTime.timePath(),
+        runTime.timeName(),
+        runTime,
+        [&](Ostream& os) { dem.writeState(os); }
+    );
 }
 
 
