@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
-#include "particleVTKWriter.H"
 #include "pairSearch.H"
 #include "cyclicPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
@@ -190,25 +189,6 @@ Foam::scalar Foam::fdmParticleCloud::readGapFloor() const
 }
 
 
-void Foam::fdmParticleCloud::readOutput()
-{
-    const dictionary output(dict_.subOrEmptyDict("output"));
-    fdm::checkKeywords
-    (
-        output, {"timeSeriesInterval", "vtkInterval"}, "output block"
-    );
-    vtkInterval_ = fdm::particleVTKWriter::readInterval(output);
-    timeSeriesInterval_ = output.getOrDefault<label>("timeSeriesInterval", 1);
-    if (timeSeriesInterval_ < 1)
-    {
-        FatalIOErrorInFunction(dict_)
-            << "output.timeSeriesInterval " << timeSeriesInterval_ << " in "
-            << dict_.name() << ": allowed values are integers >= 1"
-            << exit(FatalIOError);
-    }
-}
-
-
 void Foam::fdmParticleCloud::reportSetup() const
 {
     Info<< "    " << size() << " particles in " << groups_.size()
@@ -259,8 +239,6 @@ Foam::fdmParticleCloud::fdmParticleCloud
     hasHistory_(false),
     firstSolveDone_(false),
     verbose_(true),
-    timeSeriesInterval_(1),
-    vtkInterval_(0),
     system_(0),
     lambdaPartsSum_(Zero),
     timings_{0, 0, 0, 0},
@@ -333,7 +311,10 @@ Foam::fdmParticleCloud::fdmParticleCloud
         state_.radius
     );
 
-    readOutput();
+    output_.reset
+    (
+        new particleCloudOutput(mesh_, dict_.subOrEmptyDict("output"), dict_)
+    );
     reportSetup();
 }
 

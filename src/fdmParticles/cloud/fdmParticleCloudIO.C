@@ -3,54 +3,19 @@
   License: GPL-3.0-or-later (see LICENSE)
 
 Description
-    Particle state for restarts, the HDF5 time series, the lagrangian
-    cloud and the VTK series for ParaView.
+    Particle state for restarts, and the calls of particleCloudOutput (HDF5
+    time series, lagrangian cloud, VTK series) after the finite check.
 
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
-#include "lagrangianCloudWriter.H"
 #include "particleStateFile.H"
-#include "particleVTKWriter.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "IOobject.H"
 #include "isFinite.H"
 #include "planeWalls.H"
 #include "StringStream.H"
-#include <cctype>
-
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
-
-namespace
-{
-
-//- Force, torque and stresslet as the fields force, torque, stresslet, or
-//  with a prefix <prefix>Force, <prefix>Torque, <prefix>Stresslet, of the
-//  lagrangian cloud or a VTK file
-template<class Writer>
-void writeLoads
-(
-    Writer& w,
-    const std::string& prefix,
-    const Foam::fdm::particleLoads& loads
-)
-{
-    const auto name = [&](const std::string& n)
-    {
-        if (prefix.empty())
-        {
-            return Foam::word(n);
-        }
-        return Foam::word(prefix + char(std::toupper(n[0])) + n.substr(1));
-    };
-    w.write(name("force"), loads.force);
-    w.write(name("torque"), loads.torque);
-    w.write(name("stresslet"), loads.stresslet);
-}
-
-} // namespace
-
 
 // * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
 
@@ -188,47 +153,28 @@ Foam::fdmParticleCloud::hdf5Description() const
 }
 
 
+Foam::particleCloudOutput::particles
+Foam::fdmParticleCloud::outputView() const
+{
+    return {state_, hydro_, dipoleTrace_, contact_};
+}
+
+
 void Foam::fdmParticleCloud::writeTimeSeries()
 {
     if (empty())
     {
         return;
     }
-    const Time& runTime = mesh_.time();
-    if (runTime.timeIndex() % timeSeriesInterval_ == 0)
+    if (output_->timeSeriesDue())
     {
         checkFinite();
-        if (!timeSeries_)
-        {
-            // Created at the first record, so that -postProcess, which
-            // constructs the cloud but records nothing, leaves it alone
-            timeSeries_.reset
-            (
-                new particleHDF5Writer
-                (
-                    runTime.globalPath()/"postProcessing"/"particles.h5",
-                    state_.radius,
-                    state_.group,
-                    runTime.value(),
-                    hdf5Description()
-                )
-            );
-        }
-        timeSeries_->append
-        (
-            runTime.value(),
-            {
-                state_.position, state_.U, state_.Omega,
-                hydro_.force, hydro_.torque, hydro_.stresslet, dipoleTrace_,
-                contact_.force, contact_.torque, contact_.stresslet
-            }
-        );
     }
-    if (timeSeries_ && runTime.writeTime())
-    {
-        // Publish the records up to this write time
-        timeSeries_->commit();
-    }
+    output_->writeTimeSeries
+    (
+        outputView(),
+        [this]() { return hdf5Description(); }
+    );
 }
 
 
@@ -239,62 +185,20 @@ void Foam::fdmParticleCloud::writeLagrangian() const
         return;
     }
     checkFinite();
-
-    const lagrangianCloudWriter cloud(mesh_, "particles", state_.position);
-    cloud.write("id", labelList(identity(size())));
-    cloud.write("group", state_.group);
-    cloud.write("d", scalarField(2*state_.radius));
-    cloud.write("U", state_.U);
-    cloud.write("omega", state_.Omega);
-    writeLoads(cloud, "", hydro_);
-    writeLoads(cloud, "contact", contact_);
+    output_->writeLagrangian(outputView());
 }
 
 
 void Foam::fdmParticleCloud::writeVTK()
 {
-    const Time& runTime = mesh_.time();
-    const bool due = fdm::particleVTKWriter::due
-    (
-        vtkInterval_, runTime.timeIndex(), runTime.writeTime()
-    );
-    if (empty() || !Pstream::master() || (vtk_ && !due))
+    if (empty() || !Pstream::master() || !output_->vtkDue())
     {
         return;
     }
     checkFinite();
-    if (!vtk_)
-    {
-        // Created at the first call, the start time: the series begins
-        // with the initial state (and -postProcess never gets here)
-        vtk_.reset
-        (
-            new fdm::particleVTKWriter
-            (
-                runTime.globalPath()/"VTK", runTime.value()
-            )
-        );
-    }
-
-    auto file = vtk_->particles
+    output_->writeVTK
     (
-        runTime.timeName(), runTime.value(), state_.position
-    );
-    file.write("id", labelList(identity(size())));
-    file.write("group", state_.group);
-    file.write("radius", state_.radius);
-    file.write("velocity", state_.U);
-    file.write("angularVelocity", state_.Omega);
-    writeLoads(file, "", hydro_);
-    file.write("dipoleTrace", dipoleTrace_);
-    writeLoads(file, "contact", contact_);
-    file.close();
-
-    vtk_->contacts
-    (
-        runTime.timeName(),
-        runTime.value(),
-        state_.position,
+        outputView(),
         contacts_
       ? contacts_->network(state_.U, state_.Omega)
       : fdm::contactNetwork()
