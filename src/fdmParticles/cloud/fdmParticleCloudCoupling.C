@@ -88,9 +88,9 @@ Foam::scalar Foam::fdmParticleCloud::lambdaChange
     const vectorField& l
 ) const
 {
-    const labelList& supportCells = stencils_.supportCells();
     // Residual of eq 2.54; lambda is zero outside the supports, so the sums
     // over support cells are the sums over the mesh
+    const labelList& supportCells = stencils_.supportCells();
     scalar diff = 0, norm = 0;
     forAll(supportCells, i)
     {
