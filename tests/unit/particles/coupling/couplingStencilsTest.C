@@ -70,6 +70,19 @@ fdm::couplingStencils stencilsOf
 }
 
 
+// The stencils of one sphere at x
+fdm::couplingStencils stencilsOf
+(
+    const lattice& mesh,
+    const point& x,
+    const scalar a,
+    const bool periodicX
+)
+{
+    return stencilsOf(mesh, pointField(1, x), a, periodicX);
+}
+
+
 // A rigid motion U + Omega x (x - x0) at every cell
 List<vector> rigidField
 (
@@ -105,7 +118,7 @@ TEST(couplingStencils, supportHoldsExactlyTheCellsWithinReach)
 {
     const lattice mesh(16, 0.25);
     const point x0(2.1, 1.9, 2.05);
-    const fdm::couplingStencils s(stencilsOf(mesh, pointField(1, x0), 1, false));
+    const fdm::couplingStencils s(stencilsOf(mesh, x0, 1, false));
 
     const scalar R = 1 + 0.3*mesh.h;
     label expected = 0;
@@ -128,8 +141,8 @@ TEST(couplingStencils, periodicImageReachesAcrossTheBoundary)
     // with offsets measured from its image at x = 4.3
     const lattice mesh(16, 0.25);
     const point x0(0.3, 2, 2);
-    const fdm::couplingStencils s(stencilsOf(mesh, pointField(1, x0), 1, true));
-    const fdm::couplingStencils walled(stencilsOf(mesh, pointField(1, x0), 1, false));
+    const fdm::couplingStencils s(stencilsOf(mesh, x0, 1, true));
+    const fdm::couplingStencils walled(stencilsOf(mesh, x0, 1, false));
 
     label across = 0;
     for (const label c : s.supportCells())
@@ -144,7 +157,7 @@ TEST(couplingStencils, periodicImageReachesAcrossTheBoundary)
     // the boundary
     const fdm::rigidBodyMoments m = s.moments(mesh.V)[0];
     const fdm::rigidBodyMoments inside =
-        stencilsOf(mesh, pointField(1, point(2.3, 2, 2)), 1, false).moments(mesh.V)[0];
+        stencilsOf(mesh, point(2.3, 2, 2), 1, false).moments(mesh.V)[0];
     EXPECT_NEAR(m.volume, inside.volume, 1e-12);
     EXPECT_NEAR(mag(m.firstMoment - inside.firstMoment), 0, 1e-12);
 }
@@ -159,8 +172,8 @@ TEST(couplingStencils, overlappingSupportsShareLambda)
     x[0] = point(1.45, 2, 2);
     x[1] = point(3.4, 2, 2);
     const fdm::couplingStencils s(stencilsOf(mesh, x, 1, false));
-    const fdm::couplingStencils one(stencilsOf(mesh, pointField(1, x[0]), 1, false));
-    const fdm::couplingStencils two(stencilsOf(mesh, pointField(1, x[1]), 1, false));
+    const fdm::couplingStencils one(stencilsOf(mesh, x[0], 1, false));
+    const fdm::couplingStencils two(stencilsOf(mesh, x[1], 1, false));
 
     const label shared =
         one.supportCells().size() + two.supportCells().size()
@@ -183,7 +196,7 @@ TEST(couplingStencils, integralsOfARigidMotionAreThePseudoMass)
     // to (U, Omega) (eq 2.53), whatever the lattice's off-centring
     const lattice mesh(16, 0.25);
     const point x0(2.07, 1.93, 2.11);
-    const fdm::couplingStencils s(stencilsOf(mesh, pointField(1, x0), 1, false));
+    const fdm::couplingStencils s(stencilsOf(mesh, x0, 1, false));
     const vector U(0.3, -1.2, 0.7);
     const vector Omega(-0.4, 0.9, 0.25);
 
@@ -202,7 +215,7 @@ TEST(couplingStencils, correctionsMoveTowardsTheRigidMotion)
 {
     const lattice mesh(16, 0.25);
     const point x0(2.07, 1.93, 2.11);
-    const fdm::couplingStencils s(stencilsOf(mesh, pointField(1, x0), 1, false));
+    const fdm::couplingStencils s(stencilsOf(mesh, x0, 1, false));
     const List<vector> U({vector(1, 0, 0)});
     const List<vector> Omega({vector(0, 0, 0.5)});
     const List<vector> rigid
@@ -254,7 +267,7 @@ TEST(couplingStencils, dipoleIntegralsOfUniformFields)
     // first moment of the support cells, pressure 2 times the J_u volume
     const lattice mesh(16, 0.25);
     const point x0(2.07, 1.93, 2.11);
-    const fdm::couplingStencils s(stencilsOf(mesh, pointField(1, x0), 1, false));
+    const fdm::couplingStencils s(stencilsOf(mesh, x0, 1, false));
     const List<vector> lambda(mesh.centres.size(), vector(1, 0, 0));
     const scalarField p(mesh.centres.size(), 3);
 
