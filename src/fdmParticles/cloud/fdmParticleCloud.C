@@ -240,6 +240,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     firstSolveDone_(false),
     verbose_(true),
     system_(0),
+    contacts_(new noContacts(0)),
     lambdaPartsSum_(Zero),
     timings_{0, 0, 0, 0},
     lastSolve_{0, 0, true},
@@ -293,7 +294,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     contact_ = fdm::particleLoads(size());
 
     const scalar gapFloor = readGapFloor();
-    contacts_ = particleContacts::New
+    contacts_ = contactModel::New
     (
         dict_, mesh_, state_.radius, rhoFluid_*nu_, gapFloor
     );
@@ -323,7 +324,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
 
 Foam::label Foam::fdmParticleCloud::nContacts() const
 {
-    return contacts_ ? contacts_->nContacts() : 0;
+    return contacts_->nContacts();
 }
 
 

@@ -76,10 +76,7 @@ void Foam::fdmParticleCloud::assembleSystem
     // Sub-grid resistance and implicit contact stiffness on the left of eq
     // 2.43, per unit fluid density
     subGrid_->addTo(system_, nu_);
-    if (contacts_)
-    {
-        contacts_->addTo(system_, 1/rhoFluid_);
-    }
+    contacts_->addTo(system_, 1/rhoFluid_);
 }
 
 
@@ -117,11 +114,11 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
 
     // One neighbour search per step serves the sub-grid pairs, the
     // contacts and the smallest gap of the progress line
-    scalar reach = max(subGrid_->pairReach(state_.radius), smallestGapReach());
-    if (contacts_)
-    {
-        reach = max(reach, contacts_->pairReach());
-    }
+    const scalar reach = max
+    (
+        max(subGrid_->pairReach(state_.radius), smallestGapReach()),
+        contacts_->pairReach()
+    );
     fdm::findNearPairs(box_, state_.position, state_.radius, reach, near_);
 
     subGrid_->update(state_.position, state_.radius, box_, near_);
@@ -129,23 +126,20 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
     {
         subGrid_->report();
     }
-    if (contacts_)
+    contacts_->update
+    (
+        state_.position, state_.radius, box_, near_,
+        mesh_.time().deltaTValue()
+    );
+    if (verbose_)
     {
-        contacts_->update
-        (
-            state_.position, state_.radius, box_, near_,
-            mesh_.time().deltaTValue()
-        );
-        if (verbose_)
-        {
-            contacts_->report();
-        }
-        // Explicit loads for the coming solve; a solved state read at a
-        // restart keeps the loads it was written with
-        if (!solved_)
-        {
-            contact_ = contacts_->loads();
-        }
+        contacts_->report();
+    }
+    // Explicit loads for the coming solve; a solved state read at a
+    // restart keeps the loads it was written with
+    if (!solved_)
+    {
+        contact_ = contacts_->loads();
     }
 
     // lambda is not advected (thesis 2.4, step 2): keep it where a support
@@ -180,10 +174,7 @@ void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
             << abort(FatalError);
     }
 
-    if (contacts_)
-    {
-        contacts_->advance(state_.U, state_.Omega, deltaT);
-    }
+    contacts_->advance(state_.U, state_.Omega, deltaT);
     forAll(state_.position, p)
     {
         const point x =
@@ -336,11 +327,8 @@ void Foam::fdmParticleCloud::finishSolve
 
     // Contact loads: explicit part and the implicit stiffness' share at the
     // solved velocities
-    if (contacts_)
-    {
-        contact_ = contacts_->loads();
-        contacts_->addImplicitLoads(state_.U, state_.Omega, contact_);
-    }
+    contact_ = contacts_->loads();
+    contacts_->addImplicitLoads(state_.U, state_.Omega, contact_);
 
     firstSolveDone_ = true;
 }

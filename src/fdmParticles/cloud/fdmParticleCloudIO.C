@@ -89,13 +89,7 @@ void Foam::fdmParticleCloud::writeState() const
             os.writeEntry("torque", hydro_.torque);
             os.writeEntry("stresslet", hydro_.stresslet);
             os.writeEntry("dipoleTrace", dipoleTrace_);
-            if (contacts_)
-            {
-                os.writeEntry("contactForce", contact_.force);
-                os.writeEntry("contactTorque", contact_.torque);
-                os.writeEntry("contactStresslet", contact_.stresslet);
-                contacts_->writeState(os);
-            }
+            contacts_->writeState(os, contact_);
         }
     );
 }
@@ -199,9 +193,7 @@ void Foam::fdmParticleCloud::writeVTK()
     output_->writeVTK
     (
         outputView(),
-        contacts_
-      ? contacts_->network(state_.U, state_.Omega)
-      : fdm::contactNetwork()
+        contacts_->network(state_.U, state_.Omega)
     );
 }
 

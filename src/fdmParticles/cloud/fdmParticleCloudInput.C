@@ -206,16 +206,10 @@ void Foam::fdmParticleCloud::readState()
     hydro_.torque = state.get<List<vector>>("torque");
     state.readIfPresent("stresslet", hydro_.stresslet);
     state.readIfPresent("dipoleTrace", dipoleTrace_);
-    if (contacts_)
-    {
-        contacts_->readState(state);
-        // The loads at the solved state (explicit part plus the implicit
-        // stiffness' share), so that the record at the restart time is the
-        // one the interrupted run wrote
-        contact_.force = state.get<List<vector>>("contactForce");
-        contact_.torque = state.get<List<vector>>("contactTorque");
-        contact_.stresslet = state.get<List<symmTensor>>("contactStresslet");
-    }
+    // With the contact loads at the solved state (explicit part plus the
+    // implicit stiffness' share), so that the record at the restart time is
+    // the one the interrupted run wrote
+    contacts_->readState(state, contact_);
     solved_ = state.get<bool>("solved");
     hasHistory_ = state.get<bool>("hasHistory");
     firstSolveDone_ = solved_;

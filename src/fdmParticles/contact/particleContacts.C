@@ -83,30 +83,6 @@ Foam::particleContacts::particleContacts
 }
 
 
-Foam::autoPtr<Foam::particleContacts> Foam::particleContacts::New
-(
-    const dictionary& particleProperties,
-    const fvMesh& mesh,
-    const scalarField& radii,
-    const scalar eta,
-    const scalar gapFloor
-)
-{
-    if (!particleProperties.found("contact"))
-    {
-        return nullptr;
-    }
-    return autoPtr<particleContacts>::New
-    (
-        particleProperties.subDict("contact"),
-        mesh,
-        fdm::contactLaw::scales{radii.empty() ? 1 : min(radii), eta},
-        gapFloor,
-        radii.size()
-    );
-}
-
-
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::particleContacts::update
@@ -275,7 +251,7 @@ void Foam::particleContacts::report() const
 }
 
 
-void Foam::particleContacts::writeState(Ostream& os) const
+void Foam::particleContacts::writeSlip(Ostream& os) const
 {
     List<labelPair> keys(slip_.size());
     List<vector> slips(slip_.size());
@@ -291,7 +267,7 @@ void Foam::particleContacts::writeState(Ostream& os) const
 }
 
 
-void Foam::particleContacts::readState(const dictionary& state)
+void Foam::particleContacts::readSlip(const dictionary& state)
 {
     slip_.clear();
     if (!state.found("contactPairs"))
@@ -310,6 +286,32 @@ void Foam::particleContacts::readState(const dictionary& state)
     {
         slip_[key(keys[n].first(), keys[n].second())] = slips[n];
     }
+}
+
+
+void Foam::particleContacts::writeState
+(
+    Ostream& os,
+    const fdm::particleLoads& loads
+) const
+{
+    os.writeEntry("contactForce", loads.force);
+    os.writeEntry("contactTorque", loads.torque);
+    os.writeEntry("contactStresslet", loads.stresslet);
+    writeSlip(os);
+}
+
+
+void Foam::particleContacts::readState
+(
+    const dictionary& state,
+    fdm::particleLoads& loads
+)
+{
+    readSlip(state);
+    loads.force = state.get<List<vector>>("contactForce");
+    loads.torque = state.get<List<vector>>("contactTorque");
+    loads.stresslet = state.get<List<symmTensor>>("contactStresslet");
 }
 
 
