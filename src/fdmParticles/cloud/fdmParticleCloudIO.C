@@ -10,9 +10,6 @@ Description
 
 #include "fdmParticleCloud.H"
 #include "particleStateFile.H"
-#include "OFstream.H"
-#include "OSspecific.H"
-#include "IOobject.H"
 #include "isFinite.H"
 #include "planeWalls.H"
 #include "StringStream.H"

@@ -12,7 +12,6 @@ Description
 #include "fdmParticleCloud.H"
 #include "particleList.H"
 #include "particleStateFile.H"
-#include "OSspecific.H"
 #include "checkKeywords.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -155,21 +154,8 @@ void Foam::fdmParticleCloud::readState()
 {
     const fileName file =
         mesh_.time().globalPath()/mesh_.time().timeName()/"particleState";
-    if (!isFile(file))
+    if (!fdm::continuesFromParticleState(mesh_.time(), file, dict_.name()))
     {
-        // Without it a restart would put the particles back at their
-        // initial positions under the flow of this time
-        if (mesh_.time().value() != 0)
-        {
-            FatalErrorInFunction
-                << "Starting at time " << mesh_.time().timeName()
-                << " but " << file << " is missing." << nl
-                << "    The particle state of a restart is read from the"
-                << " case directory (also in parallel runs): copy it there"
-                << " from the run that wrote this time, or start at time 0"
-                << " from the particles that " << dict_.name()
-                << " lists" << exit(FatalError);
-        }
         return;
     }
 

@@ -100,7 +100,9 @@ void Foam::particleContacts::update
     {
         wallVelocity[w] = walls_.velocity(walls_.walls()[w]);
     }
-    loads_ = fdm::particleLoads(loads_.force.size());
+    loads_.force = Zero;
+    loads_.torque = Zero;
+    loads_.stresslet = Zero;
     nPairs_ = nWalls_ = nSliding_ = nBelowFloor_ = 0;
     minGap_ = GREAT;
 

@@ -43,11 +43,11 @@ _EPS[0, 2, 1] = _EPS[2, 1, 0] = _EPS[1, 0, 2] = -1.0
 _I = np.eye(3)
 
 # hat name -> dimensional factor (a = 1, lambda = 1)
-_FAC = {"A": 6 * PI, "B": 4 * PI, "G": 4 * PI, "C": 8 * PI, "H": 8 * PI}
+FACTOR = {"A": 6 * PI, "B": 4 * PI, "G": 4 * PI, "C": 8 * PI, "H": 8 * PI}
 # parity of the function under relabelling (lambda = 1): 22 = p*11, 21 = p*12
 # power of the length scale in each function's dimension (A ~ a, ...)
 _LENGTH_POWER = {"A": 1, "B": 2, "G": 2, "C": 3, "H": 3}
-_PAR = {"XA": 1, "YA": 1, "YB": -1, "XC": 1, "YC": 1, "XG": -1, "YG": -1,
+PARITY = {"XA": 1, "YA": 1, "YB": -1, "XC": 1, "YC": 1, "XG": -1, "YG": -1,
         "YH": 1}
 
 
@@ -63,7 +63,7 @@ def scalars(xi, xc=True, lam=LAM):
     not change the translational velocities (axial rotation decouples)."""
     xi = np.atleast_1d(np.asarray(xi, dtype=float))
     out = {}
-    for f, p in _PAR.items():
+    for f, p in PARITY.items():
         letter = f[1]
 
         def pair(ratio):
@@ -81,7 +81,7 @@ def scalars(xi, xc=True, lam=LAM):
             else:
                 scale = lam ** _LENGTH_POWER[letter]
                 s22, s21 = scale * s22, scale * s21
-        fac = _FAC[letter]
+        fac = FACTOR[letter]
         out[f] = fac * np.array([[s11, s12], [p * s21, p * s22]])
     return out
 

@@ -53,8 +53,8 @@ from . import twoSphere as ts
 PI = math.pi
 LAM = 1.0
 
-from .pairResistance import (_FAC, _I, _PAR, E_INF,  # noqa: F401
-                             W_INF, free_motion, grand_resistance, scalars)
+from .pairResistance import (E_INF, FACTOR, PARITY, W_INF,  # noqa: F401
+                             free_motion, grand_resistance, scalars)
 
 def relative_velocity(r_vec, exact=False):
     """V = dr/dt = U2 - U1 for r = x2 - x1 in u_inf = y e_x (a = gamma_dot
@@ -83,7 +83,7 @@ def AB_exact(r):
     S = scalars(r - 2.0, xc=False)
     d = np.array([0.0, 0.0, 1.0])
     e = np.array([1.0, 0.0, 0.0])
-    Ea = np.outer(d, d) - _I / 3.0
+    Ea = np.outer(d, d) - np.eye(3) / 3.0
     Eb = 0.5 * (np.outer(e, d) + np.outer(d, e))
     A = np.empty_like(r)
     B = np.empty_like(r)
@@ -105,7 +105,7 @@ def B_contact(L=1e10):
     The error is O(1/L)."""
     xi_sq = 1e-12
     S = {}
-    for f, p in _PAR.items():
+    for f, p in PARITY.items():
         letter = f[1]
         if f == "XC":
             v = [1.0, 0.0]
@@ -115,7 +115,7 @@ def B_contact(L=1e10):
                 name = f[0] + ab + letter
                 g1, g2, g3 = ts.singular(name, LAM)
                 v.append(g1 / xi_sq + g2 * L + ts.contact_constant(name, LAM))
-        s11, s12 = v[0] * _FAC[letter], v[1] * _FAC[letter]
+        s11, s12 = v[0] * FACTOR[letter], v[1] * FACTOR[letter]
         S[f] = np.array([[[s11], [s12]], [[p * s12], [p * s11]]])
     d = np.array([0.0, 0.0, 1.0])
     e = np.array([1.0, 0.0, 0.0])

@@ -6,26 +6,16 @@
 #include "demState.H"
 #include "particleStateFile.H"
 #include "Time.H"
-#include "OSspecific.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
 void Foam::fdm::readDEMState(lubricatedDEM& dem, const Time& runTime)
 {
     const fileName state = runTime.timePath()/"particleState";
-    if (isFile(state))
+    if (continuesFromParticleState(runTime, state, "the particle list"))
     {
         Info<< "Continuing from " << state << nl;
         dem.readState(readParticleStateFile(state));
-    }
-    else if (runTime.value() != 0)
-    {
-        // Without it the spheres would restart from the list's positions
-        FatalErrorInFunction
-            << "Starting at time " << runTime.timeName() << " but " << state
-            << " is missing." << nl << "    Copy it there from the run that"
-            << " wrote this time, or start at time 0 from the particles that"
-            << " the particle list holds" << exit(FatalError);
     }
 }
 

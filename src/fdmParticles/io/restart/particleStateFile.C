@@ -9,6 +9,7 @@
 #include "OSspecific.H"
 #include "IOobject.H"
 #include "fpTrapsOff.H"
+#include "Time.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -54,6 +55,31 @@ Foam::dictionary Foam::fdm::readParticleStateFile(const fileName& file)
     fpTrapsOff trapsOff;
     IFstream is(file);
     return dictionary(is);
+}
+
+
+bool Foam::fdm::continuesFromParticleState
+(
+    const Time& runTime,
+    const fileName& file,
+    const string& listName
+)
+{
+    if (isFile(file))
+    {
+        return true;
+    }
+    if (runTime.value() != 0)
+    {
+        FatalErrorInFunction
+            << "Starting at time " << runTime.timeName() << " but " << file
+            << " is missing." << nl
+            << "    The particle state of a restart is read from the case"
+            << " directory (also in parallel runs): copy it there from the"
+            << " run that wrote this time, or start at time 0 from the"
+            << " particles of " << listName << exit(FatalError);
+    }
+    return false;
 }
 
 
