@@ -106,22 +106,21 @@ void Foam::particleContacts::update
     nPairs_ = nWalls_ = nSliding_ = nBelowFloor_ = 0;
     minGap_ = GREAT;
 
-    std::map<key, vector> current;
+    fdm::pairHistory<vector> current;
     forEachContact
     (
         positions, radii, box, near,
         [&](const key& k, const fdm::contactGeometry& g, const scalar armI,
             const scalar armJ, const label wall)
         {
-            const auto old = slip_.find(k);
-            vector slip = old == slip_.end() ? vector::zero : old->second;
+            vector slip = slip_.get(k, Zero);
             const fdm::contactForce c = law_->evaluate(g, slip);
-            current[k] = slip;
+            current.append(k, slip);
 
-            const label j = wall < 0 ? k.second : -1;
+            const label j = wall < 0 ? k.second() : -1;
             fdm::addContactLoads
             (
-                c, g.normal, armI, armJ, k.first, j, loads_
+                c, g.normal, armI, armJ, k.first(), j, loads_
             );
             contacts_.push_back
             (
@@ -130,13 +129,13 @@ void Foam::particleContacts::update
                     k,
                     fdm::implicitContactSpring
                     (
-                        k.first, j, g.normal, armI, armJ,
+                        k.first(), j, g.normal, armI, armJ,
                         law_->normalStiffness(g.gap, g.floorGap)*dt,
                         c.tangentialStiffness*dt,
                         wall < 0 ? vector::zero : wallVelocity[wall]
                     ),
                     c.force,
-                    (g.gap + radii[k.first] + (wall < 0 ? radii[j] : 0))
+                    (g.gap + radii[k.first()] + (wall < 0 ? radii[j] : 0))
                    *g.normal
                 }
             );
@@ -146,7 +145,8 @@ void Foam::particleContacts::update
             minGap_ = min(minGap_, g.gap);
         }
     );
-    slip_.swap(current);
+    current.sort();
+    slip_ = std::move(current);
 
     if (nContacts() && minGap_ < -law_->roughness())
     {
@@ -182,7 +182,7 @@ void Foam::particleContacts::advance
     // about to leave, with the slip operator of their implicit stiffness
     for (const contactEntry& e : contacts_)
     {
-        slip_[e.k] += dt*e.spring.slip(U, Omega);
+        slip_[slip_.find(e.k)] += dt*e.spring.slip(U, Omega);
     }
 }
 
@@ -232,7 +232,7 @@ Foam::fdm::contactNetwork Foam::particleContacts::network
         (
             fdm::contactLink::split
             (
-                e.k.first, e.k.second, e.branch,
+                e.k.first(), e.k.second(), e.branch,
                 e.force + e.spring.force(U, Omega).force
             )
         );
@@ -255,17 +255,8 @@ void Foam::particleContacts::report() const
 
 void Foam::particleContacts::writeSlip(Ostream& os) const
 {
-    List<labelPair> keys(slip_.size());
-    List<vector> slips(slip_.size());
-    label n = 0;
-    for (const auto& e : slip_)
-    {
-        keys[n] = labelPair(e.first.first, e.first.second);
-        slips[n] = e.second;
-        ++n;
-    }
-    os.writeEntry("contactPairs", keys);
-    os.writeEntry("contactSlip", slips);
+    os.writeEntry("contactPairs", slip_.pairs());
+    os.writeEntry("contactSlip", slip_.states());
 }
 
 
@@ -284,9 +275,11 @@ void Foam::particleContacts::readSlip(const dictionary& state)
             << "contactPairs and contactSlip in " << state.name()
             << " differ in length" << exit(FatalIOError);
     }
-    forAll(keys, n)
+    if (!slip_.reset(keys, slips))
     {
-        slip_[key(keys[n].first(), keys[n].second())] = slips[n];
+        FatalIOErrorInFunction(state)
+            << "contactPairs in " << state.name() << " lists a pair twice"
+            << exit(FatalIOError);
     }
 }
 

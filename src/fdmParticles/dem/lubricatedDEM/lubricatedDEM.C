@@ -7,8 +7,6 @@
 #include "pairSearch.H"
 #include "mathematicalConstants.H"
 #include "tensor.H"
-#include "Ostream.H"
-#include "dictionary.H"
 
 using Foam::constant::mathematical::pi;
 
@@ -72,40 +70,10 @@ void Foam::fdm::lubricatedDEM::searchPairs()
     DynamicList<labelPair> pairs;
     findNearPairs(box_, position_, radius_, reach() + skin_, pairs);
 
-    // Carry the history of pairs listed before (both lists sorted); a new
-    // pair starts inactive with a defined state (written to particleState
-    // even before it interacts)
-    DynamicList<lubricatedPairState> states(pairs.size());
-    boolList active(pairs.size(), false);
-    states.resize(pairs.size(), lubricatedPairState{0, false, Zero});
-    label old = 0;
-    forAll(pairs, k)
-    {
-        const labelPair& p = pairs[k];
-        while
-        (
-            old < pairs_.size()
-         && (
-                pairs_[old].first() < p.first()
-             || (
-                    pairs_[old].first() == p.first()
-                 && pairs_[old].second() < p.second()
-                )
-            )
-        )
-        {
-            ++old;
-        }
-        if (old < pairs_.size() && pairs_[old] == p)
-        {
-            states[k] = states_[old];
-            active[k] = active_[old];
-        }
-    }
-
-    pairs_.transfer(pairs);
-    states_.transfer(states);
-    active_.transfer(active);
+    // Carry the history of pairs listed before; a new pair starts
+    // inactive with a defined state (written to particleState even before
+    // it interacts)
+    pairs_.carry(pairs, {lubricatedPairState{0, false, Zero}, false});
     displacementSinceSearch_ = Zero;
     timeSinceSearch_ = 0;
     ++nSearches_;
@@ -246,8 +214,8 @@ Foam::fdm::contactNetwork Foam::fdm::lubricatedDEM::network() const
     {
         if (pairForce_[k] != vector::zero)
         {
-            const label i = pairs_[k].first();
-            const label j = pairs_[k].second();
+            const label i = pairs_.pair(k).first();
+            const label j = pairs_.pair(k).second();
             links.append
             (
                 contactLink::split
@@ -305,87 +273,6 @@ Foam::scalar Foam::fdm::lubricatedDEM::criticalTimeStep() const
         }
     }
     return dt;
-}
-
-
-void Foam::fdm::lubricatedDEM::writeState(Ostream& os) const
-{
-    os.writeEntry("time", time_);
-    os.writeEntry("nParticles", size());
-    os.writeEntry("position", position_);
-    os.writeEntry("velocity", velocity_);
-    os.writeEntry("angularVelocity", spin_);
-    os.writeEntry("radius", radius_);
-    os.writeEntry("mobile", mobile_);
-    for (label p = 0; p < nStressParts; ++p)
-    {
-        // Output only (local stress profiles); not read back
-        os.writeEntry
-        (
-            word("stresslet_" + std::string(stressPartName(p))),
-            stresslet_[p]
-        );
-    }
-
-    scalarList logGap(pairs_.size());
-    boolList contact(pairs_.size());
-    List<vector> shearForce(pairs_.size());
-    forAll(pairs_, k)
-    {
-        logGap[k] = states_[k].logGap;
-        contact[k] = states_[k].contact;
-        shearForce[k] = states_[k].shearForce;
-    }
-    os.writeEntry("pairs", List<labelPair>(pairs_));
-    os.writeEntry("pairActive", active_);
-    os.writeEntry("pairLogGap", logGap);
-    os.writeEntry("pairContact", contact);
-    os.writeEntry("pairShearForce", shearForce);
-    os.writeEntry("timeSinceSearch", timeSinceSearch_);
-    os.writeEntry("displacementSinceSearch", displacementSinceSearch_);
-}
-
-
-void Foam::fdm::lubricatedDEM::readState(const dictionary& dict)
-{
-    const label n = dict.get<label>("nParticles");
-    if (n != size())
-    {
-        FatalIOErrorInFunction(dict)
-            << dict.name() << " holds " << n << " particles but the case"
-            << " lists " << size() << exit(FatalIOError);
-    }
-    const scalarList radius(dict.get<scalarList>("radius"));
-    forAll(radius, i)
-    {
-        if (mag(radius[i] - radius_[i]) > 1e-12*radius_[i])
-        {
-            FatalIOErrorInFunction(dict)
-                << dict.name() << ": particle " << i << " has radius "
-                << radius[i] << " but the particle list gives " << radius_[i]
-                << "; a restart continues the spheres that started the run"
-                << " (restore the list, or start again at time 0)"
-                << exit(FatalIOError);
-        }
-    }
-    position_ = dict.get<List<point>>("position");
-    velocity_ = dict.get<List<vector>>("velocity");
-    spin_ = dict.get<List<vector>>("angularVelocity");
-
-    pairs_ = dict.get<List<labelPair>>("pairs");
-    active_ = dict.get<boolList>("pairActive");
-    const scalarList logGap(dict.get<scalarList>("pairLogGap"));
-    const boolList contact(dict.get<boolList>("pairContact"));
-    const List<vector> shearForce(dict.get<List<vector>>("pairShearForce"));
-    states_.setSize(pairs_.size());
-    forAll(pairs_, k)
-    {
-        states_[k] = {logGap[k], bool(contact[k]), shearForce[k]};
-    }
-    timeSinceSearch_ = dict.get<scalar>("timeSinceSearch");
-    displacementSinceSearch_ =
-        dict.get<List<vector>>("displacementSinceSearch");
-    setTime(dict.get<scalar>("time"));
 }
 
 

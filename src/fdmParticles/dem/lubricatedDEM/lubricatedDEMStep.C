@@ -52,8 +52,8 @@ void Foam::fdm::lubricatedDEM::addPairLoads
     stepTotals& totals
 )
 {
-    const label i = pairs_[k].first();
-    const label j = pairs_[k].second();
+    const label i = pairs_.pair(k).first();
+    const label j = pairs_.pair(k).second();
     if (!mobile_[i] && !mobile_[j])
     {
         // Two floor spheres: their loads move nothing (and rows of a
@@ -67,13 +67,13 @@ void Foam::fdm::lubricatedDEM::addPairLoads
 
     if (!model_.interacts(un, a))
     {
-        active_[k] = false;
+        pairs_[k].active = false;
         return;
     }
-    if (!active_[k])
+    if (!pairs_[k].active)
     {
-        states_[k] = model_.start(un, a);
-        active_[k] = true;
+        pairs_[k].state = model_.start(un, a);
+        pairs_[k].active = true;
     }
 
     const vector nij = l/dist;
@@ -95,7 +95,7 @@ void Foam::fdm::lubricatedDEM::addPairLoads
     (
         {nij, un, a, contactVelocity, w, 0.5*(spin_[i] + spin_[j])},
         dt,
-        states_[k]
+        pairs_[k].state
     );
 
     const vector F = loads.force(nij);
@@ -113,10 +113,10 @@ void Foam::fdm::lubricatedDEM::addPairLoads
     addToTotals(loads, nij, armI, armJ, i, j, totals);
 
     ++nInteractions_;
-    if (states_[k].contact)
+    if (pairs_[k].state.contact)
     {
         ++nContacts_;
-        if (states_[k].logGap < logCrushed)
+        if (pairs_[k].state.logGap < logCrushed)
         {
             ++nCrushed_;
         }

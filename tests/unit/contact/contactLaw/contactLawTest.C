@@ -1,8 +1,8 @@
 // Unit tests for the rough contact laws (thesis 1, section 2.6 and
 // chapter 5): Hertz with barrier (eqs 2.56-2.57), tangential spring and
-// Coulomb (eqs 2.59-2.63), adhesion (eqs 5.1-5.2), loads (eqs 2.64, 2.69)
+// Coulomb (eqs 2.59-2.63), loads (eqs 2.64, 2.69)
 
-#include "hertzContact.H"
+#include "contactLawTestHelpers.H"
 #include "contactLoads.H"
 #include "IStringStream.H"
 #include "mathematicalConstants.H"
@@ -20,23 +20,6 @@ using namespace Foam;
 
 namespace
 {
-
-const fdm::contactLaw::scales unitScales{1.0, 1.0};
-
-autoPtr<fdm::contactLaw> law(const std::string& entries)
-{
-    IStringStream is(entries);
-    return fdm::contactLaw::New(dictionary(is), unitScales);
-}
-
-// h_r = 5e-3, k_n = 1e4, mu = 0.5; floor gap of a unit pair 1e-5
-const std::string thesis = "roughness 5e-3; friction 0.5; kn 1e4;";
-const scalar hr = 5e-3, kn = 1e4, mu = 0.5, floorGap = 1e-5;
-
-fdm::contactGeometry geometry(const scalar gap)
-{
-    return fdm::contactGeometry{vector(1, 0, 0), gap, floorGap};
-}
 
 // Golden table of eq 2.57, rows (h_r, floor gap, gap, F_el/k_n); the
 // Python contact law (fdmResistance.pairContact) is tested on it too
@@ -120,7 +103,8 @@ TEST(contactLaw, barrierMatchesTheGoldenTable)
         std::ofstream os(goldenTable());
         os.precision(17);
         os  << "# Eq 2.57 (thesis 1): F_el/k_n of the rough Hertz contact with"
-            << " barrier,\n# written by tests/unit/contact/contactLawTest.C"
+            << " barrier,\n# written by"
+            << " tests/unit/contact/contactLaw/contactLawTest.C"
             << " (FDM_WRITE_GOLDEN=1)\n# roughness floorGap gap F_el/k_n\n";
         for (const auto& r : rows)
         {
@@ -264,47 +248,6 @@ TEST(contactLaw, slipTurnsWithThePair)
         mag(fdm::slipVelocity(e, vector(0, -1, 0), W, 1, Zero, Zero, 0)),
         0, 1e-15
     );
-}
-
-
-TEST(contactLaw, adhesionPullOffAndFrictionOnTheElasticPart)
-{
-    const auto c = law(thesis + " model adhesiveHertz; adhesionForce 2;");
-    EXPECT_EQ(c->type(), "adhesiveHertz");
-
-    // Just inside the roughness the pair pulls with F_adh (eq 5.1)
-    fdm::contactGeometry g = geometry(hr*(1 - 1e-9));
-    vector slip = Zero;
-    fdm::contactForce f = c->evaluate(g, slip);
-    EXPECT_NEAR(f.force.x(), 2, 1e-6);
-
-    // Outside it nothing: the pull-off force is F_adh
-    g.gap = hr*(1 + 1e-9);
-    f = c->evaluate(g, slip);
-    EXPECT_EQ(mag(f.force), 0);
-
-    // Where F_el = F_adh the net normal force vanishes, and the friction
-    // cap is mu F_el, not mu (F_el - F_adh) (eq 5.2)
-    scalar lo = floorGap, hi = hr;
-    for (int it = 0; it < 200; ++it)
-    {
-        const scalar mid = 0.5*(lo + hi);
-        (c->elasticNormalForce(mid, floorGap) > 2 ? lo : hi) = mid;
-    }
-    g.gap = 0.5*(lo + hi);
-    slip = vector(0, 1, 0);
-    f = c->evaluate(g, slip);
-    EXPECT_NEAR(f.force.x(), 0, 1e-9);
-    EXPECT_NEAR(mag(f.tangential), mu*2, 1e-9);
-
-    // Adhesion number: F_adh = G 6 pi eta a_1^2 gammaDot
-    const auto d =
-        law
-        (
-            "model adhesiveHertz; roughness 5e-3; friction 0.1;"
-            " shearRate 3; meanDeformation 0.1; adhesionNumber 0.5;"
-        );
-    EXPECT_NEAR(d->adhesionForce(), 0.5*6*constant::mathematical::pi*3, 1e-12);
 }
 
 

@@ -3,6 +3,7 @@
 // Lees-Edwards images, restart and stability
 
 #include "lubricatedDEM.H"
+#include "unitTestHelpers.H"
 #include "mathematicalConstants.H"
 #include "OStringStream.H"
 #include "IStringStream.H"
@@ -502,4 +503,58 @@ TEST(lubricatedDEM, pressureWallCarriesTheImposedPressure)
     EXPECT_NEAR(-floorLoad/PA, 1, 1e-5);
     // The wall came down onto the spheres
     EXPECT_LT(dem.positions()[wall[0]].y(), 6.6 - 0.3);
+}
+
+
+TEST(lubricatedDEM, corruptPairHistoryIsAnError)
+{
+    fdm::lubricatedDEM dem = randomCloud(1, 40, 5);
+    for (label i = 0; i < 50; ++i)
+    {
+        dem.step(2e-3);
+    }
+    OStringStream os;
+    os.precision(17);
+    dem.writeState(os);
+    const string text(os.str());
+
+    // A pair list longer than its states
+    {
+        IStringStream is(text);
+        dictionary state(is);
+        state.name() = "0.1/particleState";
+        List<labelPair> pairs(state.get<List<labelPair>>("pairs"));
+        ASSERT_GT(pairs.size(), 1);
+        pairs.append(labelPair(0, 1));
+        state.set("pairs", pairs);
+        const std::string message =
+            unitTest::errorOf([&]() { dem.readState(state); });
+        EXPECT_NE(message.find("one entry per pair"), std::string::npos)
+            << message;
+        EXPECT_NE(message.find("0.1/particleState"), std::string::npos)
+            << message;
+    }
+    // A pair listed twice
+    {
+        IStringStream is(text);
+        dictionary state(is);
+        List<labelPair> pairs(state.get<List<labelPair>>("pairs"));
+        pairs[1] = pairs[0];
+        state.set("pairs", pairs);
+        const std::string message =
+            unitTest::errorOf([&]() { dem.readState(state); });
+        EXPECT_NE(message.find("twice"), std::string::npos) << message;
+    }
+    // A particle that is not in the case
+    {
+        IStringStream is(text);
+        dictionary state(is);
+        List<labelPair> pairs(state.get<List<labelPair>>("pairs"));
+        pairs[0] = labelPair(0, dem.size());
+        state.set("pairs", pairs);
+        const std::string message =
+            unitTest::errorOf([&]() { dem.readState(state); });
+        EXPECT_NE(message.find("is not two particles"), std::string::npos)
+            << message;
+    }
 }
