@@ -42,11 +42,10 @@ void Foam::fdm::lubricatedDEM::readPairs(const dictionary& dict)
     const scalarList logGap(dict.get<scalarList>("pairLogGap"));
     const boolList contact(dict.get<boolList>("pairContact"));
     const List<vector> shearForce(dict.get<List<vector>>("pairShearForce"));
-    const labelList sizes
-    ({
-        active.size(), logGap.size(), contact.size(), shearForce.size()
-    });
-    if (min(sizes) != pairs.size() || max(sizes) != pairs.size())
+    const bool onePerPair =
+        active.size() == pairs.size() && logGap.size() == pairs.size()
+     && contact.size() == pairs.size() && shearForce.size() == pairs.size();
+    if (!onePerPair)
     {
         FatalIOErrorInFunction(dict)
             << dict.name() << ": pairActive, pairLogGap, pairContact and"
