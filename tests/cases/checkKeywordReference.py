@@ -61,7 +61,7 @@ INTERNAL = {
     ("src/fdmParticles/contact/particleContacts.C", "state"),
     ("src/fdmParticles/functionObjects/suspensionStress/suspensionStress.C",
      "state"),
-    ("src/fdmParticles/dem/lubricatedDEM/lubricatedDEM.C", "dict"),
+    ("src/fdmParticles/dem/lubricatedDEM/lubricatedDEMState.C", "dict"),
     ("src/fdmParticles/subGrid/resistanceTable.C", "dict"),
     ("src/fdmParticles/subGrid/resistanceTable.C", "fd"),
     ("src/fdmParticles/subGrid/subGridModel/frameInvariantSubGrid.C",
