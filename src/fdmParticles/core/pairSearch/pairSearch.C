@@ -190,16 +190,8 @@ void Foam::fdm::findNearPairs
         }
     }
 
-    std::sort
-    (
-        pairs.begin(),
-        pairs.end(),
-        [](const labelPair& x, const labelPair& y)
-        {
-            return x.first() < y.first()
-                || (x.first() == y.first() && x.second() < y.second());
-        }
-    );
+    // By first, then second (Pair's operator<)
+    std::sort(pairs.begin(), pairs.end());
 }
 
 
