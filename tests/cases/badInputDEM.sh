@@ -69,6 +69,12 @@ expectFatal misspeltContactKey $pp 's/friction   /frictoin   /' \
     particleProperties "Unknown keyword 'frictoin'" "nearest valid spelling: 'friction'"
 expectFatal zeroInterval $pp 's/interval    100;/interval 0;/' \
     particleProperties "interval" "steps between time-series rows"
+expectFatal misspeltNeighbours $pp 's/^output/neighbours { selection delauney; }\noutput/' \
+    particleProperties "delauney" "nearest valid spelling: 'delaunay'"
+expectFatal intervalWithCutoff $pp 's/^output/neighbours { selection cutoff; interval 5; }\noutput/' \
+    particleProperties "interval" "selection delaunay only"
+expectFatal zeroDelaunayInterval $pp 's/^output/neighbours { selection delaunay; interval 0; }\noutput/' \
+    particleProperties "interval" "steps between Delaunay triangulations"
 expectFatal trackMissing $pp 's/interval    100;/& track (5000);/' \
     particleProperties "particle 5000 does not exist"
 

@@ -11,6 +11,8 @@ Description
     sheared Lees-Edwards cell: a jittered simple cubic lattice (phi 0.4,
     spacing 2.19 a), the tutorial's lubricatedContact (stiffness 1e6,
     roughness 1e-2, friction 0.4) at the article 3 cut-off 2a and at 1a,
+    and with article 2's Delaunay neighbours triangulated every step and
+    every 25 steps,
     shear rate 1, deltaT 0.2 sqrt(m/g), Stokes number 1e-2.  After 50
     steps to fill the interactions, times `steps` steps and prints a table
     of particle-steps per second and the time per particle-step, which is
@@ -34,12 +36,26 @@ int main(int argc, char* argv[])
     const label steps = argc > 1 ? std::atoi(argv[1]) : 200;
     const scalar spacing = 2.19, rho = 1e-2, g = 1e6;
 
-    Info<< "| cut-off | N | interactions per sphere | contacts |"
+    Info<< "| pairs | N | interactions per sphere | contacts |"
         << " steps | wall s | particle-steps/s | us per particle-step |"
         << nl << "|---|---|---|---|---|---|---|---|" << nl;
 
-    for (const scalar cutoff : {2.0, 1.0})
+    // Pair selections: the cut-off (Verlet list), and the Delaunay
+    // neighbours (article 2; cut-off 4a keeps every edge) triangulated
+    // every step or every 25
+    struct selection { const char* name; scalar cutoff; label interval; };
+    for
+    (
+        const selection& sel :
+        {
+            selection{"cut-off 2a", 2, 0},
+            selection{"cut-off 1a", 1, 0},
+            selection{"Delaunay, every step", 4, 1},
+            selection{"Delaunay, every 25 steps", 4, 25}
+        }
+    )
     {
+        const scalar cutoff = sel.cutoff;
         for (const label n : {10, 22, 47})
         {
             const label N = n*n*n;
@@ -51,6 +67,10 @@ int main(int argc, char* argv[])
                 1,
                 fdm::lubricatedContact(1, g, 1, 0.5, 1e-2, 0.4, cutoff)
             );
+            if (sel.interval > 0)
+            {
+                dem.setDelaunayNeighbours(sel.interval);
+            }
             std::mt19937 gen(1);
             std::uniform_real_distribution<scalar> jitter(-0.05, 0.05);
             for (label i = 0; i < n; ++i)
@@ -81,7 +101,7 @@ int main(int argc, char* argv[])
             }
             const scalar wall = clock.elapsedTime();
             const scalar rate = N*steps/wall;
-            Info<< "| " << cutoff << "a | " << N << " | "
+            Info<< "| " << sel.name << " | " << N << " | "
                 << scalar(dem.nInteractions())/N << " | "
                 << dem.nContacts() << " | " << steps << " | " << wall
                 << " | " << rate << " | " << 1e6/rate << " |" << endl;

@@ -208,7 +208,9 @@ Foam::fdm::delaunayStatistics Foam::fdm::findDelaunayPairs
     const vector& L = box.span();
     const scalar halfPeriod = 0.5*min(L.x(), min(L.y(), L.z()));
     const scalar spacing = std::cbrt(L.x()*L.y()*L.z()/max(n, label(1)));
-    scalar margin = min(2*rMax + 2*spacing, halfPeriod);
+    // Enough for dense packings at the first try (a retry triangulates
+    // again): the orthogonal spheres of the tetrahedra are about a wide
+    scalar margin = min(1.5*(rMax + spacing), halfPeriod);
 
     while (true)
     {

@@ -5,6 +5,7 @@
 
 #include "lubricatedDEM.H"
 #include "pairSearch.H"
+#include "delaunayPairs.H"
 #include "mathematicalConstants.H"
 #include "tensor.H"
 
@@ -34,6 +35,10 @@ bool Foam::fdm::lubricatedDEM::searchDue() const
     if (timeSinceSearch_ >= GREAT)
     {
         return true;
+    }
+    if (delaunayInterval_ > 0)
+    {
+        return stepsSinceSearch_ >= delaunayInterval_;
     }
 
     // A pair not listed can close in by the fluctuation displacements of
@@ -68,7 +73,14 @@ void Foam::fdm::lubricatedDEM::searchPairs()
     }
 
     DynamicList<labelPair> pairs;
-    findNearPairs(box_, position_, radius_, reach() + skin_, pairs);
+    if (delaunayInterval_ > 0)
+    {
+        findDelaunayPairs(box_, position_, radius_, pairs);
+    }
+    else
+    {
+        findNearPairs(box_, position_, radius_, reach() + skin_, pairs);
+    }
 
     // Carry the history of pairs listed before; a new pair starts
     // inactive with a defined state (written to particleState even before
@@ -76,6 +88,7 @@ void Foam::fdm::lubricatedDEM::searchPairs()
     pairs_.carry(pairs, {lubricatedPairState{0, false, Zero}, false});
     displacementSinceSearch_ = Zero;
     timeSinceSearch_ = 0;
+    stepsSinceSearch_ = 0;
     ++nSearches_;
 }
 
@@ -101,6 +114,8 @@ Foam::fdm::lubricatedDEM::lubricatedDEM
     wallLoad_(0),
     wallVelocity_(0),
     skin_(-1),
+    delaunayInterval_(0),
+    stepsSinceSearch_(0),
     timeSinceSearch_(GREAT),
     nSearches_(0),
     stresslet_(nStressParts),
@@ -123,6 +138,19 @@ Foam::fdm::lubricatedDEM::lubricatedDEM
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fdm::lubricatedDEM::setDelaunayNeighbours(const label interval)
+{
+    if (interval < 1)
+    {
+        FatalErrorInFunction
+            << "Steps between Delaunay triangulations " << interval
+            << " must be at least 1" << abort(FatalError);
+    }
+    delaunayInterval_ = interval;
+    timeSinceSearch_ = GREAT;
+}
+
 
 Foam::label Foam::fdm::lubricatedDEM::addParticle
 (

@@ -287,6 +287,7 @@ void Foam::fdm::lubricatedDEM::step(const scalar dt)
     advanceParticles(dt, totals);
 
     timeSinceSearch_ += dt;
+    ++stepsSinceSearch_;
     setTime(time_ + dt);
     forAll(position_, i)
     {

@@ -49,7 +49,7 @@ void Foam::fdm::checkDEMKeywords(const dictionary& props)
         {
             "particlesFile", "particles", "density", "cell", "drag",
             "fixedGroups", "gravity", "fluidDensity", "pressureWall",
-            "lubricatedContact", "output"
+            "lubricatedContact", "neighbours", "output"
         },
         "top level of the lubricatedDEM input"
     );
@@ -65,6 +65,7 @@ void Foam::fdm::checkDEMKeywords(const dictionary& props)
             }
         },
         {"pressureWall", {"group", "pressure", "damping"}},
+        {"neighbours", {"selection", "interval"}},
         {"output", {"interval", "track", "vtkInterval"}}
     };
     for (const auto& block : blocks)
@@ -102,6 +103,36 @@ Foam::FixedList<bool, 3> Foam::fdm::readPeriodicity(const dictionary& cell)
 }
 
 
+void Foam::fdm::setNeighbours(lubricatedDEM& dem, const dictionary& props)
+{
+    const dictionary dict(props.subOrEmptyDict("neighbours"));
+    const word selection(dict.getOrDefault<word>("selection", "cutoff"));
+    fdm::checkChoice(dict, "selection", selection, {"cutoff", "delaunay"});
+    if (selection == "delaunay")
+    {
+        dem.setDelaunayNeighbours
+        (
+            label
+            (
+                fdm::readBoundedOrDefault
+                (
+                    dict, "interval", 1, 1, labelMax,
+                    "steps between Delaunay triangulations (1: the pairs"
+                    " follow every change of the triangulation)"
+                )
+            )
+        );
+    }
+    else if (dict.found("interval"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "interval: the steps between Delaunay triangulations apply"
+            << " to selection delaunay only (cutoff pairs come from a"
+            << " Verlet list)" << exit(FatalIOError);
+    }
+}
+
+
 Foam::fdm::lubricatedDEM Foam::fdm::createDEM
 (
     const dictionary& props,
@@ -130,6 +161,7 @@ Foam::fdm::lubricatedDEM Foam::fdm::createDEM
         "particle density rho_p (Stokes number rho_p a^2 gammaDot/eta)"
     );
     setDrag(dem, props);
+    setNeighbours(dem, props);
 
     const fdm::particleList list =
         fdm::readParticleList(props, runTime.constant());
@@ -167,7 +199,17 @@ Foam::fdm::lubricatedDEM Foam::fdm::createDEM
         << "    roughness " << m.roughness() << ", friction "
         << m.friction() << ", cutoff " << m.cutoff() << " a, shearArms "
         << fdm::lubricatedContact::shearArmsNames[m.arms()] << nl
-        << "    stiffness number g/(eta gammaDot a) "
+        << "    lubricated pairs: ";
+    if (dem.delaunayInterval() > 0)
+    {
+        Info<< "Delaunay neighbours within the cutoff, triangulated every "
+            << dem.delaunayInterval() << " steps" << nl;
+    }
+    else
+    {
+        Info<< "every pair within the cutoff" << nl;
+    }
+    Info<< "    stiffness number g/(eta gammaDot a) "
         << m.stiffness()/(m.viscosity()*max(mag(shearRate), SMALL)*a)
         << ", Stokes number rho a^2 gammaDot/eta "
         << rho*a*a*mag(shearRate)/m.viscosity() << nl;

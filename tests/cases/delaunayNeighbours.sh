@@ -1,0 +1,66 @@
+#!/bin/bash
+# Case test: lubricatedDEMFoam with neighbours { selection delaunay; }
+# (thesis 2, article 2: the lubricated pairs are the edges of the Delaunay
+# triangulation).  A dense monodisperse packing (phi 0.45, 12^3 cell, no
+# shear, so nothing moves) run for two steps:
+#  - the pairs of the written particleState are exactly the edges of the
+#    periodic Delaunay triangulation that Qhull (scipy.spatial.Delaunay)
+#    gives for the centres and their 26 periodic images, edges with at
+#    least one end in the cell;
+#  - a pair interacts (pairActive) exactly when its gap is below the
+#    cut-off (set to 0.5 a here, so that some Delaunay pairs are out of
+#    reach).
+source "${0%/*}/caseTestFunctions"
+
+work=$(caseWorkDir delaunayNeighbours)
+mkdir -p "$work"
+cp -r "$FDM_PROJECT_DIR/tutorials/lubricatedShear"/{system,constant} "$work"/
+pp="$work/constant/particleProperties"
+sed -i -e 's/(16 16 16)/(12 12 12)/' -e 's/shearRate   1;/shearRate   0;/' \
+    -e 's/^    cutoff .*/    cutoff              0.5;/' \
+    -e 's/^output/neighbours\n{\n    selection   delaunay;\n    interval    1;\n}\n\noutput/' "$pp"
+sed -i -e 's/^endTime .*/endTime 8e-5;/' -e 's/^writeInterval .*/writeInterval 8e-5;/' \
+    "$work/system/controlDict"
+(cd "$work" && runLogged fdmPackParticles --box 12 12 12 --walls '' --ratio 1 \
+    --phi 0.45 --gap 0.05 --seed 4 -o constant/particleList) || exit 1
+(cd "$work" && runLogged lubricatedDEMFoam) || exit 1
+grep -q "lubricated pairs: Delaunay neighbours" "$work/log.lubricatedDEMFoam" \
+    || { echo "FAILED: the log does not name the Delaunay neighbours"; exit 1; }
+
+"$FDM_PYTHON" - "$work" <<'PY'
+import itertools, os, sys
+import numpy as np
+from scipy.spatial import Delaunay
+from fdmPost.particleCase import read_list
+
+work = sys.argv[1]
+text = open(os.path.join(work, "8e-05", "particleState")).read()
+x = read_list(text, "position", 3)
+a = read_list(text, "radius", 1)
+pairs = read_list(text, "pairs", 2).astype(int)
+active = read_list(text, "pairActive", 1).astype(bool)
+n, L = len(x), 12.0
+
+shifts = [np.zeros(3)] + [L*np.array(s) for s in
+    itertools.product((-1, 0, 1), repeat=3) if any(s)]
+points = np.concatenate([x + s for s in shifts])
+edges = set()
+for simplex in Delaunay(points).simplices:
+    for u, v in itertools.combinations(simplex, 2):
+        if u < n or v < n:
+            i, j = u % n, v % n
+            edges.add((min(i, j), max(i, j)))
+listed = set(map(tuple, pairs))
+print("   %d particles, %d listed pairs, %d Qhull edges, %d in both"
+      % (n, len(listed), len(edges), len(listed & edges)))
+ok = listed == edges and len(pairs) == len(listed)
+
+d = x[pairs[:, 1]] - x[pairs[:, 0]]
+d -= L*np.round(d/L)
+gap = np.linalg.norm(d, axis=1) - a[pairs[:, 0]] - a[pairs[:, 1]]
+inReach = gap < 0.5*0.5*(a[pairs[:, 0]] + a[pairs[:, 1]])
+print("   %d pairs within the cut-off 0.5 a, %d interacting, %d mismatches"
+      % (inReach.sum(), active.sum(), (inReach != active).sum()))
+ok &= (inReach == active).all() and 0 < active.sum() < len(active)
+sys.exit(0 if ok else 1)
+PY
