@@ -4,9 +4,11 @@ per run the averages over strain 2-5 (fdmPost.demRheology.averages) are
 merged into results.dat here (so the report can be redone without the
 runs); then
 
-  friction family (cut-off 2a, phi 0.48 and 0.52): phi_m = phi (1 + I_v^1/2)
-      from the master curve, against eq 13, and eq 13's form fitted;
-  phi family (mu_m = 0.4, cut-offs 2a and 1a): mu(I_v) split into its
+  friction family (cut-off 2a and the Delaunay pairs, phi 0.48 and 0.52):
+      phi_m = phi (1 + I_v^1/2) from the master curve, against eq 13, and
+      eq 13's form fitted;
+  phi family (mu_m = 0.4, cut-offs 2a, 1a and the Delaunay pairs): mu(I_v)
+      split into its
       contact part mu_c, fitted with eq 14's mu_c = mu_1 + (mu_2 - mu_1)/
       (1 + I_0/I_v), and its lubrication part mu_L against eq 14's
       mu_h = I_v (1 - phi)^-5/2; eta_r against eq 16;
@@ -42,6 +44,12 @@ from fdmPost.report import write_markdown  # noqa: E402
 RESULTS = os.path.join(HERE, "results.dat")
 COLUMNS = ("mu_m", "phiNominal", "cutoff", "phi", "Iv", "mu", "eta_r",
            "eta_rErr", "muContact", "muLubrication", "lambda33")
+DELAUNAY = 0    # the cutoff column of the Delaunay pairs (run name cutD)
+
+
+def pairs_name(cutoff):
+    """The pair set of a cutoff column value, for tables and legends."""
+    return "Delaunay pairs" if cutoff == DELAUNAY else "cut-off %ga" % cutoff
 CONTACT = ("normalContact", "shearContact")
 
 
@@ -49,7 +57,7 @@ def measure(work):
     """Rows (dicts) of the runs in work."""
     rows = []
     for case in glob.glob(os.path.join(work, "mu*_phi*_cut*")):
-        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+)$", case)
+        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D)$", case)
         try:
             a, _, _, _ = averages(case, 2.0)
         except SystemExit as e:
@@ -57,7 +65,8 @@ def measure(work):
             continue
         contact = sum(a["share"][p] for p in CONTACT)
         rows.append(dict(zip(COLUMNS, (
-            float(m.group(1)), float(m.group(2)), float(m.group(3)),
+            float(m.group(1)), float(m.group(2)),
+            DELAUNAY if m.group(3) == "D" else float(m.group(3)),
             a["phi"], a["Iv"], a["mu"], a["eta_r"][0], a["eta_r"][1],
             contact * a["mu"], (1 - contact) * a["mu"], a["lambda33"]))))
     return rows
@@ -82,12 +91,13 @@ def merged(new):
     return out
 
 
-def friction_family(rows, lines):
-    sel = [r for r in rows if r["cutoff"] == 2
+def friction_family(rows, lines, cutoff, png):
+    sel = [r for r in rows if r["cutoff"] == cutoff
            and r["phiNominal"] in (0.48, 0.52)]
     if not sel:
         return None
-    lines += ["## phi_m against the contact friction (cut-off 2a)", "",
+    lines += ["## phi_m against the contact friction (%s)"
+              % pairs_name(cutoff), "",
               "| mu_m | phi | I_v | mu | eta_r | phi_m = phi (1 + I_v^1/2) "
               "| eq 13 | difference |", "|---|---|---|---|---|---|---|---|"]
     for r in sel:
@@ -124,8 +134,9 @@ def friction_family(rows, lines):
     ax.set_xlabel(r"$\mu_m$")
     ax.set_ylabel(r"$\phi_m = \phi\,(1 + I_v^{1/2})$")
     ax.legend()
+    ax.set_title(pairs_name(cutoff))
     fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "phiMax.png"), dpi=120)
+    fig.savefig(os.path.join(HERE, png), dpi=120)
     return fit
 
 
@@ -147,7 +158,7 @@ def phi_family(rows, lines):
         sel = sorted((r for r in fam if r["cutoff"] == cut),
                      key=lambda r: r["Iv"])
         x = np.array([r["Iv"] for r in sel])
-        lines += ["", "## mu(I_v) at mu_m = 0.4, cut-off %ga" % cut, "",
+        lines += ["", "## mu(I_v) at mu_m = 0.4, %s" % pairs_name(cut), "",
                   "| phi | I_v | mu | eq 14 at I_v | mu_c | mu_L "
                   "| I_v (1 - phi)^-5/2 | eta_r | eq 16 at phi "
                   "| phi (1 + I_v^1/2) |",
@@ -178,13 +189,13 @@ def phi_family(rows, lines):
         lines += ["", "mu_L / (I_v (1 - phi)^-5/2): %s."
                   % ", ".join("%.2f" % v for v in ratio)]
         ax.loglog(x, [r["mu"] for r in sel], "o", color="C%d" % k,
-                  label="DEM $\\mu$, cut-off %ga" % cut)
+                  label="DEM $\\mu$, %s" % pairs_name(cut))
         ax.loglog(x, [r["muContact"] for r in sel], "s", mfc="none",
-                  color="C%d" % k, label="DEM $\\mu_c$, cut-off %ga" % cut)
+                  color="C%d" % k, label="DEM $\\mu_c$, %s" % pairs_name(cut))
         ax.loglog(x, [r["muLubrication"] for r in sel], "^", mfc="none",
-                  color="C%d" % k, label="DEM $\\mu_L$, cut-off %ga" % cut)
+                  color="C%d" % k, label="DEM $\\mu_L$, %s" % pairs_name(cut))
         axes[1].semilogy([r["phi"] for r in sel], [r["eta_r"] for r in sel],
-                         "o", color="C%d" % k, label="DEM, cut-off %ga" % cut)
+                         "o", color="C%d" % k, label="DEM, %s" % pairs_name(cut))
     ax.set_xlabel("$I_v$")
     ax.set_ylabel(r"$\mu$")
     ax.legend(fontsize=7)
@@ -207,7 +218,8 @@ def main():
              "1:1.4, roughness 1e-2), averages over strain 2-5; mu = "
              "sigma_xy/P, P = -sigma_yy; mu_c and mu_L its contact and "
              "lubrication parts.", ""]
-    friction_family(rows, lines)
+    friction_family(rows, lines, 2, "phiMax.png")
+    friction_family(rows, lines, DELAUNAY, "phiMaxDelaunay.png")
     phi_family(rows, lines)
     write_markdown(os.path.join(HERE, "report.md"), lines)
 

@@ -25,94 +25,85 @@ typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Regular_triangulation_vertex_base_3<Kernel> VertexBase;
 typedef CGAL::Triangulation_vertex_base_with_info_3<label, Kernel, VertexBase>
     Vertex;
-typedef CGAL::Regular_triangulation_cell_base_3<Kernel> Cell;
+// Hidden points (none without large overlaps) need not be remembered
+typedef CGAL::Regular_triangulation_cell_base_3
+<
+    Kernel,
+    CGAL::Triangulation_cell_base_3<Kernel>,
+    CGAL::Discard_hidden_points
+> Cell;
 typedef CGAL::Triangulation_data_structure_3<Vertex, Cell> DataStructure;
 typedef CGAL::Regular_triangulation_3<Kernel, DataStructure> Triangulation;
 typedef Kernel::Weighted_point_3 WeightedPoint;
+typedef std::vector<std::pair<WeightedPoint, label>> pointList;
 
 
-//- Centres and their periodic images within margin of the box faces:
-//  source[k] is the particle of point k; the first size() are the centres
-class periodicPoints
+//- Whether x lies within margin of the box along every direction
+bool inWindow(const fdm::periodicBox& box, const point& x, const scalar margin)
 {
-public:
-
-    std::vector<std::pair<WeightedPoint, label>> points;
-    std::vector<label> source;
-
-    periodicPoints
-    (
-        const fdm::periodicBox& box,
-        const UList<point>& positions,
-        const UList<scalar>& radii,
-        const scalar margin
-    )
+    for (direction d = 0; d < 3; ++d)
     {
-        const vector& L = box.span();
-        forAll(positions, i)
-        {
-            add(positions[i], radii[i], i);
-        }
-        // The image ny periods up in y sits +ny s along x (Lees-Edwards);
-        // nx reaches -2..2 so that the shifted images still cover x
-        forAll(positions, i)
-        {
-            for (label nz = -1; nz <= 1; ++nz)
-            for (label ny = -1; ny <= 1; ++ny)
-            for (label nx = -2; nx <= 2; ++nx)
-            {
-                if (nx == 0 && ny == 0 && nz == 0)
-                {
-                    continue;
-                }
-                const point x
-                (
-                    positions[i].x() + nx*L.x() + ny*box.shearOffset(),
-                    positions[i].y() + ny*L.y(),
-                    positions[i].z() + nz*L.z()
-                );
-                if (inWindow(box, x, margin))
-                {
-                    add(x, radii[i], i);
-                }
-            }
-        }
-    }
-
-    static bool inWindow
-    (
-        const fdm::periodicBox& box,
-        const point& x,
-        const scalar margin
-    )
-    {
-        for (direction d = 0; d < 3; ++d)
-        {
-            const scalar lo = box.min()[d] - margin;
-            const scalar hi = box.min()[d] + box.span()[d] + margin;
-            if (x[d] < lo || x[d] >= hi)
-            {
-                return false;
-            }
-        }
-        return true;
-    }
-
-private:
-
-    void add(const point& x, const scalar r, const label i)
-    {
-        points.emplace_back
+        if
         (
-            WeightedPoint(Kernel::Point_3(x.x(), x.y(), x.z()), r*r),
-            label(source.size())
-        );
-        source.push_back(i);
+            x[d] < box.min()[d] - margin
+         || x[d] >= box.min()[d] + box.span()[d] + margin
+        )
+        {
+            return false;
+        }
     }
-};
+    return true;
+}
 
 
-//- Distance from x to the outer boundary of the window box + margin
+//- Append the periodic images of the centres that lie within outer but
+//  not within inner of the box faces to points, their particles to
+//  source.  The image ny periods up in y sits +ny s along x (Lees-Edwards);
+//  nx reaches -2..2 so that the shifted images still cover x.
+void addImages
+(
+    const fdm::periodicBox& box,
+    const UList<point>& positions,
+    const UList<scalar>& radii,
+    const scalar inner,
+    const scalar outer,
+    pointList& points,
+    std::vector<label>& source
+)
+{
+    const vector& L = box.span();
+    forAll(positions, i)
+    {
+        for (label nz = -1; nz <= 1; ++nz)
+        for (label ny = -1; ny <= 1; ++ny)
+        for (label nx = -2; nx <= 2; ++nx)
+        {
+            const point x
+            (
+                positions[i].x() + nx*L.x() + ny*box.shearOffset(),
+                positions[i].y() + ny*L.y(),
+                positions[i].z() + nz*L.z()
+            );
+            if ((nx || ny || nz) && inWindow(box, x, outer)
+             && !inWindow(box, x, inner))
+            {
+                points.emplace_back
+                (
+                    WeightedPoint
+                    (
+                        Kernel::Point_3(x.x(), x.y(), x.z()),
+                        sqr(radii[i])
+                    ),
+                    label(source.size())
+                );
+                source.push_back(i);
+            }
+        }
+    }
+}
+
+
+//- Distance from x to the outer boundary of the box widened by margin
 scalar clearance
 (
     const fdm::periodicBox& box,
@@ -131,31 +122,35 @@ scalar clearance
 }
 
 
-//- Whether every tetrahedron with a vertex among the first n points is
-//  regular with respect to all images, also those beyond the margin: a
-//  point q outside the window has power |c - q|^2 - w_q >= clearance^2 -
-//  wMax at the orthogonal centre c, so clearance^2 > R^2 + wMax suffices
-bool marginSuffices
+//- The edges (particle pairs) of the tetrahedra with a vertex among the
+//  first n points, when each of these tetrahedra is regular with respect
+//  to all images, also those beyond the margin: a point q outside the
+//  widened box has power |c - q|^2 - w_q >= clearance^2 - wMax at the
+//  orthogonal centre c, so clearance^2 > R^2 + wMax suffices.  False
+//  (edges incomplete) when a tetrahedron fails.
+bool collectEdges
 (
     const fdm::periodicBox& box,
     const Triangulation& rt,
     const label n,
+    const std::vector<label>& source,
     const scalar margin,
-    const scalar wMax
+    const scalar wMax,
+    std::vector<std::pair<label, label>>& edges
 )
 {
-    for
-    (
-        auto c = rt.all_cells_begin();
-        c != rt.all_cells_end();
-        ++c
-    )
+    edges.clear();
+    for (auto c = rt.all_cells_begin(); c != rt.all_cells_end(); ++c)
     {
+        FixedList<label, 4> v(-1);
         bool hasCentre = false;
-        for (int v = 0; v < 4; ++v)
+        for (int k = 0; k < 4; ++k)
         {
-            hasCentre = hasCentre
-             || (!rt.is_infinite(c->vertex(v)) && c->vertex(v)->info() < n);
+            if (!rt.is_infinite(c->vertex(k)))
+            {
+                v[k] = c->vertex(k)->info();
+                hasCentre = hasCentre || v[k] < n;
+            }
         }
         if (!hasCentre)
         {
@@ -173,6 +168,18 @@ bool marginSuffices
         if (gap <= 0 || sqr(gap) <= R2 + wMax)
         {
             return false;
+        }
+        for (int a = 0; a < 4; ++a)
+        {
+            for (int b = a + 1; b < 4; ++b)
+            {
+                if (v[a] < n || v[b] < n)
+                {
+                    const label i = source[v[a]];
+                    const label j = source[v[b]];
+                    edges.emplace_back(min(i, j), max(i, j));
+                }
+            }
         }
     }
     return true;
@@ -208,52 +215,31 @@ Foam::fdm::delaunayStatistics Foam::fdm::findDelaunayPairs
     const vector& L = box.span();
     const scalar halfPeriod = 0.5*min(L.x(), min(L.y(), L.z()));
     const scalar spacing = std::cbrt(L.x()*L.y()*L.z()/max(n, label(1)));
-    // Enough for dense packings at the first try (a retry triangulates
-    // again): the orthogonal spheres of the tetrahedra are about a wide
-    scalar margin = min(1.5*(rMax + spacing), halfPeriod);
 
-    while (true)
+    // The centres, then images in widening shells until the check passes;
+    // a wider margin adds its shell to the triangulation
+    pointList points;
+    std::vector<label> source;
+    forAll(positions, i)
     {
-        const periodicPoints set(box, positions, radii, margin);
-        const Triangulation rt(set.points.begin(), set.points.end());
+        const point& x = positions[i];
+        points.emplace_back
+        (
+            WeightedPoint(Kernel::Point_3(x.x(), x.y(), x.z()), sqr(radii[i])),
+            i
+        );
+        source.push_back(i);
+    }
+    // The orthogonal spheres of a dense packing's tetrahedra are about a
+    // radius wide: start from a_max plus the mean spacing, grow by a
+    // quarter while the check fails
+    scalar margin = min(rMax + spacing, halfPeriod);
+    addImages(box, positions, radii, 0, margin, points, source);
+    Triangulation rt(points.begin(), points.end());
 
-        if (marginSuffices(box, rt, n, margin, sqr(rMax)))
-        {
-            std::vector<std::pair<label, label>> edges;
-            for (auto e = rt.finite_edges_begin(); e != rt.finite_edges_end(); ++e)
-            {
-                const label a = e->first->vertex(e->second)->info();
-                const label b = e->first->vertex(e->third)->info();
-                if (a >= n && b >= n)
-                {
-                    continue;
-                }
-                const label i = set.source[a];
-                const label j = set.source[b];
-                if (i == j)
-                {
-                    FatalErrorInFunction
-                        << "Particle " << i << " neighbours its own periodic"
-                        << " image: the cell " << L << " is too small for"
-                        << " Delaunay neighbours" << abort(FatalError);
-                }
-                edges.emplace_back(min(i, j), max(i, j));
-            }
-            std::sort(edges.begin(), edges.end());
-            edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-            pairs.setCapacity(edges.size());
-            for (const auto& e : edges)
-            {
-                pairs.append(labelPair(e.first, e.second));
-            }
-
-            label nVisible = 0;
-            for (auto v = rt.finite_vertices_begin(); v != rt.finite_vertices_end(); ++v)
-            {
-                nVisible += (v->info() < n);
-            }
-            return {label(set.points.size()), margin, n - nVisible};
-        }
+    std::vector<std::pair<label, label>> edges;
+    while (!collectEdges(box, rt, n, source, margin, sqr(rMax), edges))
+    {
         if (margin >= halfPeriod)
         {
             FatalErrorInFunction
@@ -262,8 +248,34 @@ Foam::fdm::delaunayStatistics Foam::fdm::findDelaunayPairs
                 << " triangulation of " << n << " spheres in the cell " << L
                 << ": too few or too sparse particles" << abort(FatalError);
         }
-        margin = min(1.5*margin, halfPeriod);
+        const scalar inner = margin;
+        margin = min(1.25*margin, halfPeriod);
+        points.clear();
+        addImages(box, positions, radii, inner, margin, points, source);
+        rt.insert(points.begin(), points.end());
     }
+
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    pairs.setCapacity(edges.size());
+    for (const auto& e : edges)
+    {
+        if (e.first == e.second)
+        {
+            FatalErrorInFunction
+                << "Particle " << e.first << " neighbours its own periodic"
+                << " image: the cell " << L << " is too small for"
+                << " Delaunay neighbours" << abort(FatalError);
+        }
+        pairs.append(labelPair(e.first, e.second));
+    }
+
+    label nVisible = 0;
+    for (auto v = rt.finite_vertices_begin(); v != rt.finite_vertices_end(); ++v)
+    {
+        nVisible += (v->info() < n);
+    }
+    return {label(source.size()), margin, n - nVisible};
 }
 
 
