@@ -10,6 +10,11 @@
 #  - a pair interacts (pairActive) exactly when its gap is below the
 #    cut-off (set to 0.5 a here, so that some Delaunay pairs are out of
 #    reach).
+# The same packing sheared (triangulated every 3 steps) for 0.01 strain: a
+# restart from the state written halfway ends bitwise where the straight
+# run ends (the triangulation schedule is part of the state), and a state
+# written with the cut-off pairs is searched again when the case switches
+# to the Delaunay pairs.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir delaunayNeighbours)
@@ -64,3 +69,41 @@ print("   %d pairs within the cut-off 0.5 a, %d interacting, %d mismatches"
 ok &= (inReach == active).all() and 0 < active.sum() < len(active)
 sys.exit(0 if ok else 1)
 PY
+[ $? -eq 0 ] || exit 1
+
+# Sheared: straight against restarted halfway, every 3 steps
+sheared()
+{
+    rm -rf "$1" && mkdir -p "$1"
+    cp -r "$work"/{system,constant} "$1"/
+    sed -i -e 's/shearRate   0;/shearRate   1;/' -e 's/interval    1;/interval    3;/' \
+        "$1/constant/particleProperties"
+    sed -i -e "s/^endTime .*/endTime $2;/" -e 's/^writeInterval .*/writeInterval 0.005;/' \
+        "$1/system/controlDict"
+}
+sheared "$work/straight" 0.01
+(cd "$work/straight" && runLogged lubricatedDEMFoam) || exit 1
+sheared "$work/restarted" 0.005
+(cd "$work/restarted" && runLogged lubricatedDEMFoam \
+    && sed -i 's/^endTime .*/endTime 0.01;/' system/controlDict \
+    && mv log.lubricatedDEMFoam log.first && runLogged lubricatedDEMFoam) || exit 1
+if cmp -s "$work/straight/0.01/particleState" "$work/restarted/0.01/particleState"
+then
+    echo "   sheared, triangulated every 3 steps: the restart ends bitwise on the straight run"
+else
+    echo "FAILED: the restarted run's particleState at 0.01 differs from the straight run's"
+    exit 1
+fi
+
+# A cut-off state continued with the Delaunay pairs: searched at once
+sheared "$work/switched" 0.005
+sed -i 's/selection   delaunay;/selection   cutoff;/; /interval    3;/d' \
+    "$work/switched/constant/particleProperties"
+(cd "$work/switched" && runLogged lubricatedDEMFoam \
+    && sed -i 's/^endTime .*/endTime 0.01;/' system/controlDict \
+    && cp ../straight/constant/particleProperties constant/ \
+    && mv log.lubricatedDEMFoam log.first && runLogged lubricatedDEMFoam) || exit 1
+grep -q "lists cutoff pairs; the delaunay pairs are searched at the first step" \
+    "$work/switched/log.lubricatedDEMFoam" \
+    || { echo "FAILED: a cut-off state was not searched again"; exit 1; }
+echo "   a state with cut-off pairs continued with the Delaunay pairs: searched again"

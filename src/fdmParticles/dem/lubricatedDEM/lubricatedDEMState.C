@@ -97,7 +97,9 @@ void Foam::fdm::lubricatedDEM::writeState(Ostream& os) const
     }
 
     writePairs(os);
+    os.writeEntry("pairSelection", pairSelectionName());
     os.writeEntry("timeSinceSearch", timeSinceSearch_);
+    os.writeEntry("stepsSinceSearch", stepsSinceSearch_);
     os.writeEntry("displacementSinceSearch", displacementSinceSearch_);
 }
 
@@ -130,8 +132,24 @@ void Foam::fdm::lubricatedDEM::readState(const dictionary& dict)
 
     readPairs(dict);
     timeSinceSearch_ = dict.get<scalar>("timeSinceSearch");
+    stepsSinceSearch_ = dict.getOrDefault<label>("stepsSinceSearch", 0);
     displacementSinceSearch_ =
         dict.get<List<vector>>("displacementSinceSearch");
+
+    // Pairs listed by another selection (the case's neighbours changed
+    // since the state was written; states before the choice existed hold
+    // cut-off pairs): search again at the first step
+    const word selection
+    (
+        dict.getOrDefault<word>("pairSelection", "cutoff")
+    );
+    if (selection != pairSelectionName())
+    {
+        Info<< "    " << dict.name() << " lists " << selection
+            << " pairs; the " << pairSelectionName()
+            << " pairs are searched at the first step" << nl;
+        timeSinceSearch_ = GREAT;
+    }
     setTime(dict.get<scalar>("time"));
 }
 
