@@ -44,12 +44,18 @@ from fdmPost.report import write_markdown  # noqa: E402
 RESULTS = os.path.join(HERE, "results.dat")
 COLUMNS = ("mu_m", "phiNominal", "cutoff", "phi", "Iv", "mu", "eta_r",
            "eta_rErr", "muContact", "muLubrication", "lambda33")
-DELAUNAY = 0    # the cutoff column of the Delaunay pairs (run name cutD)
+# The cutoff column of the Delaunay pairs (run name cutD) and of the
+# Delaunay pairs with article 2's spheres (cutA: one radius, 5 %
+# polydispersity, roughness 2e-2)
+DELAUNAY, ARTICLE2 = 0, -1
+PAIRS = {"D": DELAUNAY, "A": ARTICLE2}
 
 
 def pairs_name(cutoff):
     """The pair set of a cutoff column value, for tables and legends."""
-    return "Delaunay pairs" if cutoff == DELAUNAY else "cut-off %ga" % cutoff
+    return {DELAUNAY: "Delaunay pairs",
+            ARTICLE2: "Delaunay pairs, article 2's spheres"}.get(
+                cutoff, "cut-off %ga" % cutoff)
 CONTACT = ("normalContact", "shearContact")
 
 
@@ -57,7 +63,7 @@ def measure(work):
     """Rows (dicts) of the runs in work."""
     rows = []
     for case in glob.glob(os.path.join(work, "mu*_phi*_cut*")):
-        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D)$", case)
+        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D|A)$", case)
         try:
             a, _, _, _ = averages(case, 2.0)
         except SystemExit as e:
@@ -66,7 +72,8 @@ def measure(work):
         contact = sum(a["share"][p] for p in CONTACT)
         rows.append(dict(zip(COLUMNS, (
             float(m.group(1)), float(m.group(2)),
-            DELAUNAY if m.group(3) == "D" else float(m.group(3)),
+            PAIRS.get(m.group(3)) if m.group(3) in PAIRS
+            else float(m.group(3)),
             a["phi"], a["Iv"], a["mu"], a["eta_r"][0], a["eta_r"][1],
             contact * a["mu"], (1 - contact) * a["mu"], a["lambda33"]))))
     return rows
