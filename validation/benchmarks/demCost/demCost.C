@@ -55,7 +55,6 @@ int main(int argc, char* argv[])
         }
     )
     {
-        const scalar cutoff = sel.cutoff;
         for (const label n : {10, 22, 47})
         {
             const label N = n*n*n;
@@ -65,7 +64,7 @@ int main(int argc, char* argv[])
                 fdm::periodicBox(point::zero, point(L, L, L),
                     FixedList<bool, 3>(true)),
                 1,
-                fdm::lubricatedContact(1, g, 1, 0.5, 1e-2, 0.4, cutoff)
+                fdm::lubricatedContact(1, g, 1, 0.5, 1e-2, 0.4, sel.cutoff)
             );
             if (sel.interval > 0)
             {
