@@ -25,6 +25,12 @@ const Foam::wordList Foam::fdm::resistanceTable::wallFunctionNames
     "XA", "YA", "YB", "XC", "YC", "XG", "XP"
 });
 
+const Foam::wordList Foam::fdm::resistanceTable::twoBodyFunctionNames
+({
+    "XA11", "XA12", "YA11", "YA12", "YB11", "YB12", "XC11", "XC12",
+    "YC11", "YC12", "XG11", "XG12", "YG11", "YG12", "YH11", "YH12"
+});
+
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
 
@@ -61,21 +67,26 @@ Foam::word Foam::fdm::resistanceTable::readKind(const dictionary& dict)
     const word kind(dict.get<word>("kind"));
     if (kind == "pair")
     {
-        pair_ = true;
+        kind_ = tableKind::pair;
     }
     else if (kind == "wall")
     {
-        pair_ = false;
+        kind_ = tableKind::wall;
+    }
+    else if (kind == "twoBody")
+    {
+        kind_ = tableKind::twoBody;
     }
     else
     {
         FatalIOErrorInFunction(dict)
             << "Resistance table " << name_ << ": kind " << kind
-            << " is neither pair nor wall" << exit(FatalIOError);
+            << " is not one of pair, wall, twoBody" << exit(FatalIOError);
     }
 
+    const bool pairGap = kind_ != tableKind::wall;
     const word gapVariable(dict.get<word>("gapVariable"));
-    const word expected(pair_ ? "xi" : "epsilon");
+    const word expected(pairGap ? "xi" : "epsilon");
     if (gapVariable != expected)
     {
         FatalIOErrorInFunction(dict)
@@ -84,7 +95,7 @@ Foam::word Foam::fdm::resistanceTable::readKind(const dictionary& dict)
             << expected << exit(FatalIOError);
     }
 
-    if (pair_)
+    if (pairGap)
     {
         lambda_ = dict.get<scalar>("lambda");
         if (lambda_ <= 0)
@@ -164,7 +175,12 @@ void Foam::fdm::resistanceTable::readFunction
             << exit(FatalIOError);
     }
 
-    cutoff_[fi] = fd.getOrDefault<scalar>("cutoff", defaultCutoff(fn));
+    // A two-body table has no cut-off of its own (the pair law has one)
+    cutoff_[fi] = fd.getOrDefault<scalar>
+    (
+        "cutoff",
+        kind_ == tableKind::twoBody ? GREAT : defaultCutoff(fn)
+    );
     if (cutoff_[fi] <= 0)
     {
         FatalIOErrorInFunction(fd)
@@ -184,7 +200,7 @@ Foam::fdm::resistanceTable::resistanceTable
 )
 :
     name_(dict.name()),
-    pair_(true),
+    kind_(tableKind::pair),
     lambda_(0),
     xMin_(xMin)
 {
@@ -200,7 +216,7 @@ Foam::fdm::resistanceTable::resistanceTable
     }
     const dictionary& funcs = *funcsPtr;
 
-    const wordList& names = pair_ ? pairFunctionNames : wallFunctionNames;
+    const wordList& names = functionNames();
     singular_.setSize(names.size());
     remainder_.setSize(names.size());
     cutoff_.setSize(names.size());
@@ -241,9 +257,20 @@ Foam::fdm::resistanceTable Foam::fdm::resistanceTable::read
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+const Foam::wordList& Foam::fdm::resistanceTable::functionNames() const
+{
+    switch (kind_)
+    {
+        case tableKind::wall: return wallFunctionNames;
+        case tableKind::twoBody: return twoBodyFunctionNames;
+        default: return pairFunctionNames;
+    }
+}
+
+
 Foam::label Foam::fdm::resistanceTable::index(const word& name) const
 {
-    const wordList& names = pair_ ? pairFunctionNames : wallFunctionNames;
+    const wordList& names = functionNames();
     forAll(names, fi)
     {
         if (names[fi] == name)
@@ -265,11 +292,52 @@ Foam::scalar Foam::fdm::resistanceTable::cutoff(const word& name) const
 }
 
 
+Foam::label Foam::fdm::resistanceTable::interval
+(
+    const scalar xc,
+    scalar& w
+) const
+{
+    // Linear interpolation of the remainder, constant below the first point
+    if (xc <= gap_.first())
+    {
+        w = 0;
+        return 1;
+    }
+    // First point > xc; xc <= gap.last() so i is in [1, size-1]
+    label i = label(std::upper_bound(gap_.begin(), gap_.end(), xc)
+                    - gap_.begin());
+    i = min(i, gap_.size() - 1);
+    w = (xc - gap_[i-1])/(gap_[i] - gap_[i-1]);
+    return i;
+}
+
+
+Foam::scalar Foam::fdm::resistanceTable::evaluate
+(
+    const label fi,
+    const scalar xc,
+    const label i,
+    const scalar w,
+    const bool withSqueeze
+) const
+{
+    // Singular part, thesis B.1/B.2 forms
+    const FixedList<scalar, 3>& g = singular_[fi];
+    const scalar lnInv = -std::log(xc);
+    const scalar f =
+        (withSqueeze ? g[0]/xc : 0) + g[1]*lnInv + g[2]*xc*lnInv;
+    const scalarList& rem = remainder_[fi];
+    return f + (1 - w)*rem[i-1] + w*rem[i];
+}
+
+
 Foam::scalar Foam::fdm::resistanceTable::value
 (
     const word& name,
     const scalar x,
-    const scalar a1
+    const scalar a1,
+    const bool withSqueeze
 ) const
 {
     const label fi = index(name);
@@ -281,29 +349,55 @@ Foam::scalar Foam::fdm::resistanceTable::value
     }
 
     const scalar xc = min(max(x, xMin_), gap_.last());
+    scalar w;
+    const label i = interval(xc, w);
+    return std::pow(a1, lengthPower(name))*evaluate(fi, xc, i, w, withSqueeze);
+}
 
-    // Singular part, thesis B.1/B.2 forms
-    const FixedList<scalar, 3>& g = singular_[fi];
-    const scalar lnInv = -std::log(xc);
-    scalar f = g[0]/xc + g[1]*lnInv + g[2]*xc*lnInv;
 
-    // Remainder: linear interpolation, constant below the first point
-    const scalarList& rem = remainder_[fi];
-    if (xc <= gap_.first())
+Foam::scalar Foam::fdm::resistanceTable::value
+(
+    const word& name,
+    const scalar x,
+    const scalar a1
+) const
+{
+    return value(name, x, a1, true);
+}
+
+
+Foam::scalar Foam::fdm::resistanceTable::regularValue
+(
+    const word& name,
+    const scalar x,
+    const scalar a1
+) const
+{
+    return value(name, x, a1, false);
+}
+
+
+void Foam::fdm::resistanceTable::values
+(
+    const scalar x,
+    const scalar a1,
+    const bool withSqueeze,
+    scalarList& f
+) const
+{
+    const wordList& names = functionNames();
+    f.setSize(names.size());
+    const scalar xc = min(max(x, xMin_), gap_.last());
+    scalar w;
+    const label i = interval(xc, w);
+    forAll(names, fi)
     {
-        f += rem.first();
+        f[fi] =
+            x > cutoff_[fi]
+          ? 0
+          : std::pow(a1, lengthPower(names[fi]))
+           *evaluate(fi, xc, i, w, withSqueeze);
     }
-    else
-    {
-        // First point > xc; xc <= gap.last() so i is in [1, size-1]
-        label i = label(std::upper_bound(gap_.begin(), gap_.end(), xc)
-                        - gap_.begin());
-        i = min(i, gap_.size() - 1);
-        const scalar w = (xc - gap_[i-1])/(gap_[i] - gap_[i-1]);
-        f += (1 - w)*rem[i-1] + w*rem[i];
-    }
-
-    return std::pow(a1, lengthPower(name))*f;
 }
 
 
@@ -313,10 +407,10 @@ Foam::fdm::pairBaseFunctions Foam::fdm::resistanceTable::pairFunctions
     const scalar a1
 ) const
 {
-    if (!pair_)
+    if (kind_ != tableKind::pair)
     {
         FatalErrorInFunction
-            << "Resistance table " << name_ << " is a wall table"
+            << "Resistance table " << name_ << " is not a pair table"
             << exit(FatalError);
     }
 
@@ -341,10 +435,10 @@ Foam::fdm::wallBaseFunctions Foam::fdm::resistanceTable::wallFunctions
     const scalar a
 ) const
 {
-    if (pair_)
+    if (kind_ != tableKind::wall)
     {
         FatalErrorInFunction
-            << "Resistance table " << name_ << " is a pair table"
+            << "Resistance table " << name_ << " is not a wall table"
             << exit(FatalError);
     }
 

@@ -4,7 +4,9 @@ Usage (from the repository root):
     PYTHONPATH=src/python python3 -m fdmResistance.writeTables --out data/resistance
 
 Files: twoSphereTheory_lambda<%g of lambda, 6 digits> for lambda = 1, 1.4,
-1/1.4, and wallTheory.  Each function is stored as
+1/1.4, wallTheory, and twoBody_lambda1 (the complete pair hydrodynamics of
+the DEM's lubrication twoSphere: every 11 and 12 function of two equal
+spheres minus the isolated sphere's, on a grid extended to xi = 10).  Each function is stored as
     f(x) = singular[0]/x + singular[1] ln(1/x) + singular[2] x ln(1/x) + remainder(x)
 with remainder tabulated on the gap grid (linear interpolation), remainder(0)
 = the O(1) constant of the near-contact form.  The script checks that linear
@@ -34,6 +36,59 @@ def gap_grid(n=240, xmin=1e-6, xsplit=0.05, xmax=0.5):
     g1 = np.geomspace(xmin, xsplit, n_log)
     g2 = np.linspace(xsplit, xmax, n_lin + 1)[1:]
     return np.concatenate(([0.0], g1, g2))
+
+
+def two_body_grid(n=260, xmax=10.0, n_far=200):
+    """The sub-grid grid continued geometrically from 0.5 to xmax: the DEM
+    cut-off reaches a few radii."""
+    g = gap_grid(n)
+    return np.concatenate((g, np.geomspace(g[-1], xmax, n_far + 1)[1:]))
+
+
+# Two equal spheres (lambda = 1): the 11 and 12 functions; the 22 and 21
+# blocks follow by parity (Jeffrey & Onishi 1984: 22 = p 11, 21 = p 12,
+# p = -1 for B and G).  Dimensional (a = 1, eta = 1) with the factors of
+# pairResistance, minus the isolated sphere (6 pi, 8 pi on the 11 diagonals)
+TWO_BODY = ["XA11", "XA12", "YA11", "YA12", "YB11", "YB12", "XC11", "XC12",
+            "YC11", "YC12", "XG11", "XG12", "YG11", "YG12", "YH11", "YH12"]
+_FACTOR = {"A": 6 * np.pi, "B": 4 * np.pi, "G": 4 * np.pi, "C": 8 * np.pi,
+           "H": 8 * np.pi}
+
+
+def _hat_name(name):
+    return name[0] + name[2:] + name[1]
+
+
+def _isolated(name):
+    return _FACTOR[name[1]] if name in ("XA11", "YA11", "XC11", "YC11") \
+        else 0.0
+
+
+def two_body_function(name, x):
+    return _FACTOR[name[1]] * ts.hat(_hat_name(name), x, 1.0) \
+        - _isolated(name)
+
+
+def two_body_table(grid):
+    """{name: (singular, remainder)} of the two-body functions and the
+    interpolation check: the error relative to the value or, where the
+    function is small, to the isolated sphere's scale (6 pi, 4 pi, 8 pi)."""
+    out, worst = {}, {}
+    xm = np.sqrt(grid[1:-1] * grid[2:])
+    for name in TWO_BODY:
+        fac = _FACTOR[name[1]]
+        g = tuple(fac * v for v in ts.singular(_hat_name(name), 1.0))
+        f = two_body_function(name, grid[1:])
+        rem = np.empty_like(grid)
+        rem[1:] = f - _sing(g, grid[1:])
+        rem[0] = fac * ts.contact_constant(_hat_name(name), 1.0) \
+            - _isolated(name)
+        out[name] = (g, rem)
+        fm = two_body_function(name, xm)
+        fi = _sing(g, xm) + np.interp(xm, grid, rem)
+        scale = np.maximum(np.abs(fm), fac)
+        worst[name] = float(np.max(np.abs(fi - fm) / scale))
+    return out, worst
 
 
 def _sing(g, x):
@@ -123,6 +178,22 @@ WALL_HEADER = """\
 """
 
 
+TWO_BODY_HEADER = """\
+// Two-body hydrodynamics of two equal spheres (lambda = 1), dimensional for
+// a = 1, eta = 1, xi = r/a - 2: the exact two-sphere resistance functions
+// (twin-multipole series of Jeffrey & Onishi 1984 and Jeffrey 1992, summed
+// to order %d with the singular terms in closed form, twoSphere.py; X^C from
+// the rotlet image series) minus the isolated sphere's (6 pi a on XA11, YA11,
+// 8 pi a^3 on XC11, YC11).  Kim & Karrila indices: "12" is the force/torque
+// on sphere 1 due to the motion of sphere 2, d from 1 to 2; the 22 and 21
+// functions are p times the 11 and 12 ones, p = -1 for YB, XG, YG.
+// Normalisation as pairResistance: A 6pi, B and G 4pi, C and H 8pi times the
+// Jeffrey-Onishi scalars.  Sign convention F = -eta R.(U - U_inf) + Gt:E.
+// Interpolation check (max error at grid mid-points, relative to the value
+// or, where smaller, to the isolated scale 6pi, 4pi, 8pi): %s
+"""
+
+
 def write_dict(path, obj, kind, lam, grid, funcs, header):
     with open(path, "w") as fh:
         fh.write("FoamFile { version 2.0; format ascii; class dictionary; "
@@ -179,6 +250,16 @@ def main(argv=None):
     write_dict(os.path.join(args.out, "wallTheory"), "wallTheory", "wall",
                None, grid, funcs, WALL_HEADER % ("%.1e" % w))
     print("   wrote", os.path.join(args.out, "wallTheory"))
+    grid2 = two_body_grid(args.npoints)
+    funcs, worst = two_body_table(grid2)
+    w = max(worst.values())
+    print("two-body: interpolation max rel. error %.2e" % w)
+    print("   " + ", ".join("%s %.1e" % kv for kv in worst.items()))
+    ok &= w < TOL
+    write_dict(os.path.join(args.out, "twoBody_lambda1"), "twoBody_lambda1",
+               "twoBody", 1.0, grid2, funcs,
+               TWO_BODY_HEADER % (ts.KMAX, "%.1e" % w))
+    print("   wrote", os.path.join(args.out, "twoBody_lambda1"))
     if not ok:
         print("ERROR: interpolation tolerance %g not met" % TOL)
         return 1

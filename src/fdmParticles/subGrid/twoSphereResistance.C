@@ -1,0 +1,115 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+
+\*---------------------------------------------------------------------------*/
+
+#include "twoSphereResistance.H"
+#include "resistanceTensorForms.H"
+#include "tensor.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdm::twoSphereResistance::twoSphereResistance
+(
+    const resistanceTable& table,
+    const scalar viscosity
+)
+:
+    table_(table),
+    viscosity_(viscosity)
+{
+    if (table_.kind() != resistanceTable::tableKind::twoBody)
+    {
+        FatalErrorInFunction
+            << "Resistance table " << table_.name() << " is not a twoBody"
+            << " table (kind twoBody: the exact functions of two spheres"
+            << " minus the isolated sphere's)" << exit(FatalError);
+    }
+    if (mag(table_.lambda() - 1) > SMALL)
+    {
+        FatalErrorInFunction
+            << "Resistance table " << table_.name() << ": lambda = "
+            << table_.lambda() << "; the two-body hydrodynamics reads the"
+            << " table of equal spheres (lambda 1)" << exit(FatalError);
+    }
+}
+
+
+Foam::fdm::twoSphereResistance::twoSphereResistance
+(
+    const fileName& table,
+    const scalar viscosity,
+    const scalar xMin
+)
+:
+    twoSphereResistance(resistanceTable::read(table, xMin), viscosity)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::fdm::twoSphereLoads Foam::fdm::twoSphereResistance::loads
+(
+    const vector& d,
+    const scalar centreGap,
+    const scalar radius1,
+    const scalar radius2,
+    const vector& U1,
+    const vector& W1,
+    const vector& U2,
+    const vector& W2,
+    const symmTensor& E,
+    const bool withSqueeze
+) const
+{
+    // Equal-sphere functions at the harmonic-mean radius (see Description)
+    const scalar a = 2*radius1*radius2/(radius1 + radius2);
+    scalarList f;
+    table_.values(centreGap/a, a, withSqueeze, f);
+
+    // s[a][b] of one letter pair from its 11 and 12 functions and parity
+    auto block = [&f](const label f11, const scalar p, const label a,
+                      const label b)
+    {
+        const scalar s11 = f[f11], s12 = f[f11 + 1];
+        return a == b ? (a == 0 ? s11 : p*s11) : (a == 0 ? s12 : p*s12);
+    };
+
+    const vector U[2] = {U1, U2};
+    const vector W[2] = {W1, W2};
+    const scalar eta = viscosity_;
+    twoSphereLoads out;
+    for (label i = 0; i < 2; ++i)
+    {
+        vector F(Zero), T(Zero);
+        for (label j = 0; j < 2; ++j)
+        {
+            F -= axialForm(block(XA11, 1, i, j), block(YA11, 1, i, j), d)
+                 & U[j];
+            F -= epsilonForm(-block(YB11, -1, j, i), d) & W[j];
+            F += strainContractG
+            (
+                block(XG11, -1, j, i), block(YG11, -1, j, i), d, E
+            );
+            T -= epsilonForm(block(YB11, -1, i, j), d) & U[j];
+            T -= axialForm(block(XC11, 1, i, j), block(YC11, 1, i, j), d)
+                 & W[j];
+            T += strainContractH(block(YH11, 1, j, i), d, E);
+        }
+        out.force[i] = eta*F;
+        out.torque[i] = eta*T;
+        out.translationDamping[i] = eta*symm
+        (
+            axialForm(block(XA11, 1, i, i), block(YA11, 1, i, i), d)
+        );
+        out.rotationDamping[i] = eta*symm
+        (
+            axialForm(block(XC11, 1, i, i), block(YC11, 1, i, i), d)
+        );
+    }
+    return out;
+}
+
+
+// ************************************************************************* //
