@@ -318,15 +318,13 @@ Foam::scalar Foam::fdm::resistanceTable::evaluate
     const label fi,
     const scalar xc,
     const label i,
-    const scalar w,
-    const bool withSqueeze
+    const scalar w
 ) const
 {
     // Singular part, thesis B.1/B.2 forms
     const FixedList<scalar, 3>& g = singular_[fi];
     const scalar lnInv = -std::log(xc);
-    const scalar f =
-        (withSqueeze ? g[0]/xc : 0) + g[1]*lnInv + g[2]*xc*lnInv;
+    const scalar f = g[0]/xc + g[1]*lnInv + g[2]*xc*lnInv;
     const scalarList& rem = remainder_[fi];
     return f + (1 - w)*rem[i-1] + w*rem[i];
 }
@@ -336,8 +334,7 @@ Foam::scalar Foam::fdm::resistanceTable::value
 (
     const word& name,
     const scalar x,
-    const scalar a1,
-    const bool withSqueeze
+    const scalar a1
 ) const
 {
     const label fi = index(name);
@@ -351,29 +348,16 @@ Foam::scalar Foam::fdm::resistanceTable::value
     const scalar xc = min(max(x, xMin_), gap_.last());
     scalar w;
     const label i = interval(xc, w);
-    return std::pow(a1, lengthPower(name))*evaluate(fi, xc, i, w, withSqueeze);
+    return std::pow(a1, lengthPower(name))*evaluate(fi, xc, i, w);
 }
 
 
-Foam::scalar Foam::fdm::resistanceTable::value
+const Foam::FixedList<Foam::scalar, 3>& Foam::fdm::resistanceTable::singular
 (
-    const word& name,
-    const scalar x,
-    const scalar a1
+    const word& name
 ) const
 {
-    return value(name, x, a1, true);
-}
-
-
-Foam::scalar Foam::fdm::resistanceTable::regularValue
-(
-    const word& name,
-    const scalar x,
-    const scalar a1
-) const
-{
-    return value(name, x, a1, false);
+    return singular_[index(name)];
 }
 
 
@@ -381,7 +365,6 @@ void Foam::fdm::resistanceTable::values
 (
     const scalar x,
     const scalar a1,
-    const bool withSqueeze,
     scalarList& f
 ) const
 {
@@ -396,7 +379,7 @@ void Foam::fdm::resistanceTable::values
             x > cutoff_[fi]
           ? 0
           : std::pow(a1, lengthPower(names[fi]))
-           *evaluate(fi, xc, i, w, withSqueeze);
+           *evaluate(fi, xc, i, w);
     }
 }
 

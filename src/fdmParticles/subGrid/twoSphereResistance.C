@@ -17,7 +17,8 @@ Foam::fdm::twoSphereResistance::twoSphereResistance
 )
 :
     table_(table),
-    viscosity_(viscosity)
+    viscosity_(viscosity),
+    squeeze_(0)
 {
     if (table_.kind() != resistanceTable::tableKind::twoBody)
     {
@@ -33,6 +34,7 @@ Foam::fdm::twoSphereResistance::twoSphereResistance
             << table_.lambda() << "; the two-body hydrodynamics reads the"
             << " table of equal spheres (lambda 1)" << exit(FatalError);
     }
+    squeeze_ = table_.singular("XA11")[0];
 }
 
 
@@ -66,7 +68,7 @@ Foam::fdm::twoSphereLoads Foam::fdm::twoSphereResistance::loads
     // Equal-sphere functions at the harmonic-mean radius (see Description)
     const scalar a = 2*radius1*radius2/(radius1 + radius2);
     scalarList f;
-    table_.values(centreGap/a, a, withSqueeze, f);
+    table_.values(centreGap/a, a, f);
 
     // s[a][b] of one letter pair from its 11 and 12 functions and parity
     auto block = [&f](const label f11, const scalar p, const label a,
@@ -108,7 +110,44 @@ Foam::fdm::twoSphereLoads Foam::fdm::twoSphereResistance::loads
             axialForm(block(XC11, 1, i, i), block(YC11, 1, i, i), d)
         );
     }
+    if (!withSqueeze)
+    {
+        removeSqueeze(d, centreGap, radius1, radius2, U1, U2, E, out);
+    }
     return out;
+}
+
+
+void Foam::fdm::twoSphereResistance::removeSqueeze
+(
+    const vector& d,
+    const scalar centreGap,
+    const scalar radius1,
+    const scalar radius2,
+    const vector& U1,
+    const vector& U2,
+    const symmTensor& E,
+    twoSphereLoads& loads
+) const
+{
+    // The leading term of X^A, eta c a*^2/u_n with c the table's 1/xi
+    // coefficient of XA11 (3/2 pi: thesis 2, article 1, eq 4), on the
+    // whole relative normal velocity, ambient strain included: what the
+    // implicit normal model applies.  Removed with its own-velocity
+    // blocks; the rest of X^G's 1/xi term and the O(1) term that the
+    // ambient part (2a + u_n)/u_n brings stay in the loads
+    const scalar a = 2*radius1*radius2/(radius1 + radius2);
+    const scalar c =
+        viscosity_*squeeze_*sqr(a)/max(centreGap, table_.xMin()*a);
+    const vector r = (centreGap + radius1 + radius2)*d;
+    const scalar approach = ((U2 - U1) + (E & r)) & d;
+    const vector F = c*approach*d;
+    loads.force[0] -= F;
+    loads.force[1] += F;
+    for (label i = 0; i < 2; ++i)
+    {
+        loads.translationDamping[i] -= c*sqr(d);
+    }
 }
 
 

@@ -208,31 +208,45 @@ TEST(twoSphereResistance, resistanceIsSymmetricAndRelabels)
 
 TEST(twoSphereResistance, squeezeTermIsTheLubricatedContactsForm)
 {
-    // The 1/xi terms of X^A, left out with withSqueeze false, are
-    // 3/2 pi eta a*^2/u_n on the normal approach (thesis 2, article 1,
-    // eq 4 for equal spheres), a* = 2 a1 a2/(a1 + a2)
+    // withSqueeze false leaves out 3/2 pi eta a*^2/u_n times the whole
+    // relative normal velocity, ambient strain included (thesis 2,
+    // article 1, eq 4 for equal spheres), a* = 2 a1 a2/(a1 + a2)
     const fdm::twoSphereResistance law(twoBody());
-    const vector d(0, 1, 0);
+    const vector d = vector(1, 2, 0)/std::sqrt(5.0);
     const vector v(0.2, -0.7, 0.1);
     for (const scalar a2 : {1.0, 1.1})
     {
-        const scalar un = 3e-3;
-        const fdm::twoSphereLoads full = law.loads
-        (
-            d, un, 1, a2, Zero, Zero, v, Zero, symmTensor::zero, true
-        );
-        const fdm::twoSphereLoads regular = law.loads
-        (
-            d, un, 1, a2, Zero, Zero, v, Zero, symmTensor::zero, false
-        );
-        const scalar aStar = 2*a2/(1 + a2);
-        const vector squeeze = 1.5*pi*sqr(aStar)/un*(v & d)*d;
-        for (label i = 0; i < 2; ++i)
+        for (const scalar un : {3e-3, 2.0})
         {
-            const vector diff = full.force[i] - regular.force[i];
-            EXPECT_LT(mag(diff - (i == 0 ? squeeze : -squeeze)),
-                1e-9*mag(squeeze)) << "a2 " << a2;
-            EXPECT_LT(mag(full.torque[i] - regular.torque[i]), 1e-12);
+            const fdm::twoSphereLoads full = law.loads
+            (
+                d, un, 1, a2, Zero, Zero, v, Zero, shearE, true
+            );
+            const fdm::twoSphereLoads regular = law.loads
+            (
+                d, un, 1, a2, Zero, Zero, v, Zero, shearE, false
+            );
+            const scalar aStar = 2*a2/(1 + a2);
+            const vector r = (1 + a2 + un)*d;
+            const vector squeeze =
+                1.5*pi*sqr(aStar)/un*((v + (shearE & r)) & d)*d;
+            for (label i = 0; i < 2; ++i)
+            {
+                const vector diff = full.force[i] - regular.force[i];
+                EXPECT_LT(mag(diff - (i == 0 ? squeeze : -squeeze)),
+                    1e-9*mag(squeeze)) << "a2 " << a2 << " gap " << un;
+                EXPECT_LT(mag(full.torque[i] - regular.torque[i]), 1e-12);
+                EXPECT_LT
+                (
+                    mag
+                    (
+                        full.translationDamping[i]
+                      - regular.translationDamping[i]
+                      - 1.5*pi*sqr(aStar)/un*sqr(d)
+                    ),
+                    1e-9*1.5*pi*sqr(aStar)/un
+                );
+            }
         }
     }
 }

@@ -70,11 +70,11 @@ Foam::fdm::lubricatedContact fromDictionary(const Foam::dictionary& dict)
         {
             "viscosity", "stiffness", "stiffnessRatio",
             "tangentialStiffness", "roughness", "friction", "cutoff",
-            "shearArms"
+            "shearArms", "lubrication", "table"
         },
         "lubricatedContact block"
     );
-    return lubricatedContact
+    lubricatedContact law
     (
         readBounded(dict, "viscosity", VSMALL, GREAT, "fluid viscosity eta_f"),
         readBounded
@@ -110,6 +110,30 @@ Foam::fdm::lubricatedContact fromDictionary(const Foam::dictionary& dict)
             "shearArms", dict, lubricatedContact::shearArms::contactPoint
         )
     );
+
+    const word lubrication(dict.getOrDefault<word>("lubrication", "thesis"));
+    checkChoice(dict, "lubrication", lubrication, {"thesis", "twoSphere"});
+    if (lubrication == "twoSphere")
+    {
+        fileName table
+        (
+            dict.getOrDefault<fileName>
+            (
+                "table",
+                "$FDM_PROJECT_DIR/data/resistance/twoBody_lambda1"
+            )
+        );
+        table.expand();
+        law.useTwoSphereHydrodynamics(table);
+    }
+    else if (dict.found("table"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "table: the two-body resistance table applies to lubrication"
+            << " twoSphere only (lubrication is " << lubrication << ")"
+            << exit(FatalIOError);
+    }
+    return law;
 }
 
 } // namespace
@@ -145,6 +169,41 @@ Foam::fdm::lubricatedContact::lubricatedContact
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fdm::lubricatedContact::useTwoSphereHydrodynamics
+(
+    const fileName& table
+)
+{
+    // The functions freeze where the asperities touch (gap floored at the
+    // roughness, and at the table's first point for smooth spheres)
+    twoBody_ = std::make_shared<const twoSphereResistance>
+    (
+        table, viscosity_, max(roughness_, 1e-6)
+    );
+    if (cutoff_ > twoBody_->maxGap())
+    {
+        FatalErrorInFunction
+            << "cutoff " << cutoff_ << " is beyond the last gap "
+            << twoBody_->maxGap() << " of the two-body table " << table
+            << "; allowed cutoff <= " << twoBody_->maxGap()
+            << exit(FatalError);
+    }
+}
+
+
+const Foam::fdm::twoSphereResistance&
+Foam::fdm::lubricatedContact::twoBody() const
+{
+    if (!twoBody_)
+    {
+        FatalErrorInFunction
+            << "lubrication thesis has no two-body hydrodynamics"
+            << abort(FatalError);
+    }
+    return *twoBody_;
+}
+
 
 Foam::fdm::lubricatedPairState Foam::fdm::lubricatedContact::start
 (
@@ -278,7 +337,10 @@ void Foam::fdm::lubricatedContact::shearStep
     }
 
     const vector slip = (m.contactVelocity - (m.contactVelocity & n)*n)*dt;
-    const scalar nut = shearLubricationCoefficient(state.logGap, a);
+    // twoSphere: the tangential lubrication is in the two-body
+    // hydrodynamics, not in series with the spring
+    const scalar nut =
+        twoBody_ ? 0 : shearLubricationCoefficient(state.logGap, a);
     const scalar ktDt = kt_*dt;
     const vector trial = Fs + kt_*slip;        // eq 29 (force on 1)
 
@@ -328,8 +390,9 @@ Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
     const scalar u = normalStep(m, dt, state, loads);
     shearStep(m, dt, state, loads);
 
-    // Rolling and twisting resistance while u <= a (A.3)
-    if (u <= 1)
+    // Rolling and twisting resistance while u <= a (A.3); twoSphere: in
+    // the two-body hydrodynamics
+    if (u <= 1 && !twoBody_)
     {
         const scalar logInv = -state.logGap;
         loads.rollingDamping =

@@ -12,22 +12,35 @@
 void Foam::fdm::setDrag(lubricatedDEM& dem, const dictionary& props)
 {
     const dictionary drag(props.subOrEmptyDict("drag"));
-    dem.setDrag
+    // lubrication twoSphere includes the isolated sphere's drag: the same
+    // viscosity on every particle, no extra drag
+    const bool twoSphere = dem.model().twoSphereHydrodynamics();
+    const scalar eta = dem.model().viscosity();
+    const scalar viscosity = fdm::readBoundedOrDefault
     (
-        fdm::readBoundedOrDefault
-        (
-            drag, "viscosity", 0, 0, GREAT,
-            "viscosity of the Stokes drag against the affine flow on every"
-            " particle (0: none)"
-        )
+        drag, "viscosity", twoSphere ? eta : 0, 0, GREAT,
+        "viscosity of the Stokes drag against the affine flow on every"
+        " particle (0: none)"
     );
+    const scalar isolatedViscosity = fdm::readBoundedOrDefault
+    (
+        drag, "isolatedViscosity", 0, 0, GREAT,
+        "viscosity of the extra drag on particles with few interactions"
+    );
+    if (twoSphere && (viscosity != eta || isolatedViscosity != 0))
+    {
+        FatalIOErrorInFunction(drag)
+            << "drag: lubricatedContact/lubrication twoSphere includes the"
+            << " isolated sphere's drag with the fluid viscosity " << eta
+            << "; allowed: drag/viscosity " << eta << " (the default) and"
+            << " no isolatedViscosity (got viscosity " << viscosity
+            << ", isolatedViscosity " << isolatedViscosity << ")"
+            << exit(FatalIOError);
+    }
+    dem.setDrag(viscosity);
     dem.setIsolatedDrag
     (
-        fdm::readBoundedOrDefault
-        (
-            drag, "isolatedViscosity", 0, 0, GREAT,
-            "viscosity of the extra drag on particles with few interactions"
-        ),
+        isolatedViscosity,
         label
         (
             fdm::readBoundedOrDefault

@@ -198,7 +198,8 @@ Foam::fdm::lubricatedDEM Foam::fdm::createDEM
         << dem.volumeFraction() << ", shear rate " << shearRate << nl
         << "    roughness " << m.roughness() << ", friction "
         << m.friction() << ", cutoff " << m.cutoff() << " a, shearArms "
-        << fdm::lubricatedContact::shearArmsNames[m.arms()] << nl
+        << fdm::lubricatedContact::shearArmsNames[m.arms()]
+        << ", lubrication " << m.lubricationName() << nl
         << "    lubricated pairs: ";
     if (dem.delaunayInterval() > 0)
     {

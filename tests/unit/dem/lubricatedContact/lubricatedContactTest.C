@@ -1,6 +1,7 @@
 // Unit tests for Foam::fdm::lubricatedContact (thesis 2, article 1)
 
 #include "lubricatedContact.H"
+#include "unitTestHelpers.H"
 #include "mathematicalConstants.H"
 
 #include <gtest/gtest.h>
@@ -303,4 +304,57 @@ TEST(lubricatedContact, badInputNamesTheKeyword)
     {
         EXPECT_NE(std::string(e.message()).find("friction"), std::string::npos);
     }
+}
+
+
+TEST(lubricatedContact, twoSphereLubricationReplacesTheThesisForms)
+{
+    // lubrication twoSphere: the squeeze stays, the tangential dashpot and
+    // the rolling and twisting torques go to the two-body hydrodynamics
+    dictionary d(inputs(0.4));
+    d.add("lubrication", "twoSphere");
+    const fdm::lubricatedContact twoSphere(d);
+    const fdm::lubricatedContact thesis(inputs(0.4));
+    ASSERT_TRUE(twoSphere.twoSphereHydrodynamics());
+    EXPECT_FALSE(thesis.twoSphereHydrodynamics());
+    EXPECT_EQ(twoSphere.lubricationName(), "twoSphere");
+
+    fdm::lubricatedPairMotion m = normalMotion(0.05);
+    m.normal = vector(0, 1, 0);
+    m.contactVelocity = vector(0.3, -0.2, 0);
+    m.relativeSpin = vector(0.1, 0.2, 0.3);
+    fdm::lubricatedPairState s1 = twoSphere.start(0.05, 1);
+    fdm::lubricatedPairState s2 = thesis.start(0.05, 1);
+    const fdm::lubricatedPairLoads l1 = twoSphere.step(m, 1e-3, s1);
+    const fdm::lubricatedPairLoads l2 = thesis.step(m, 1e-3, s2);
+    EXPECT_EQ(l1.normalLubrication, l2.normalLubrication);
+    EXPECT_EQ(mag(l1.shearLubrication), 0);
+    EXPECT_GT(mag(l2.shearLubrication), 0);
+    EXPECT_EQ(l1.rollingDamping, 0);
+    EXPECT_EQ(l1.twistingDamping, 0);
+    EXPECT_GT(l2.rollingDamping, 0);
+}
+
+
+TEST(lubricatedContact, lubricationKeywordIsChecked)
+{
+    auto messageOf = [](const dictionary& d)
+    {
+        return unitTest::errorOf([&d]() { fdm::lubricatedContact m(d); });
+    };
+    dictionary misspelt(inputs(0.4));
+    misspelt.add("lubrication", "twoSpheres");
+    EXPECT_NE(messageOf(misspelt).find("twoSphere"), std::string::npos)
+        << messageOf(misspelt);
+
+    dictionary tableWithThesis(inputs(0.4));
+    tableWithThesis.add("table", "somewhere");
+    EXPECT_NE(messageOf(tableWithThesis).find("twoSphere only"),
+        std::string::npos) << messageOf(tableWithThesis);
+
+    dictionary farCutoff(inputs(0.4));
+    farCutoff.add("lubrication", "twoSphere");
+    farCutoff.add("cutoff", 12.0);
+    EXPECT_NE(messageOf(farCutoff).find("allowed cutoff <= 10"),
+        std::string::npos) << messageOf(farCutoff);
 }
