@@ -37,13 +37,15 @@ def write(here, rows, law_rows, y_exit, eps_rough, cutoff, tols):
     lines = [
         "# Two spheres in simple shear, lubricated contact model + Stokes "
         "drag (thesis 2, article 1, section 3.2)", "",
-        "Lubrication cut-off %g a, Stokes number 1e-3, friction 0; sphere "
-        "2 starts at r = (-6, d0, 0).  Hydrodynamics thesis (article 1, "
-        "eq 4 and A.3) with both shearArms, g/(eta gammaDot a) = 1e5; "
-        "twoSphere (the squeeze of eq 4 and the exact two-body "
-        "hydrodynamics, twoSphereResistance), g/(eta gammaDot a) = 1e7 "
-        "(at 1e5 the deflection of the bulk spring, up to 7e-5 a, exceeds "
-        "the smooth pairs' minimum gaps)." % cutoff,
+        "Lubrication cut-off %g a, friction 0; sphere 2 starts at r = "
+        "(-6, d0, 0).  Hydrodynamics thesis (article 1, eq 4 and A.3) with "
+        "both shearArms, Stokes number 1e-3, g/(eta gammaDot a) = 1e5 "
+        "(the thesis' values); twoSphere (the squeeze of eq 4 and the "
+        "exact two-body hydrodynamics, twoSphereResistance), Stokes number "
+        "1e-4, g/(eta gammaDot a) = 3e7 (at 1e5 the deflection of the bulk "
+        "spring, up to 7e-5 a, exceeds the smooth pairs' minimum gaps; "
+        "run.py lists what inertia and stiffness do to the exit offset)."
+        % cutoff,
         "",
         "| law | roughness | d0 | max \\|r_y - r_y,th\\|/r_y,th "
         "| r_y at r_x = 6 | reference r_y at 6 | min gap (DEM) "

@@ -78,7 +78,10 @@ Foam::fdm::twoSphereLoads Foam::fdm::twoSphereResistance::loads
         return a == b ? (a == 0 ? s11 : p*s11) : (a == 0 ? s12 : p*s12);
     };
 
-    const vector U[2] = {U1, U2};
+    // The pair's common translation projected out, of the velocities here
+    // and of the forces below (see Description)
+    const vector common = 0.5*(U1 + U2);
+    const vector U[2] = {U1 - common, U2 - common};
     const vector W[2] = {W1, W2};
     const scalar eta = viscosity_;
     twoSphereLoads out;
@@ -101,15 +104,25 @@ Foam::fdm::twoSphereLoads Foam::fdm::twoSphereResistance::loads
         }
         out.force[i] = eta*F;
         out.torque[i] = eta*T;
-        out.translationDamping[i] = eta*symm
+        // Own block of the projected A: (A_ii - A_ij - A_ji + A_jj)/4,
+        // the 22 and 21 blocks being the 11 and 12 ones (X^A, Y^A even)
+        out.translationDamping[i] = 0.5*eta*symm
         (
-            axialForm(block(XA11, 1, i, i), block(YA11, 1, i, i), d)
+            axialForm
+            (
+                block(XA11, 1, 0, 0) - block(XA11, 1, 0, 1),
+                block(YA11, 1, 0, 0) - block(YA11, 1, 0, 1),
+                d
+            )
         );
         out.rotationDamping[i] = eta*symm
         (
             axialForm(block(XC11, 1, i, i), block(YC11, 1, i, i), d)
         );
     }
+    const vector commonForce = 0.5*(out.force[0] + out.force[1]);
+    out.force[0] -= commonForce;
+    out.force[1] -= commonForce;
     if (!withSqueeze)
     {
         removeSqueeze(d, centreGap, radius1, radius2, U1, U2, E, out);

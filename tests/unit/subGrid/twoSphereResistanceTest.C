@@ -6,6 +6,9 @@
 
 #include "twoSphereResistance.H"
 #include "mathematicalConstants.H"
+#include "point.H"
+#include "DynamicList.H"
+#include <vector>
 #include "unitTestHelpers.H"
 
 #include <gtest/gtest.h>
@@ -273,4 +276,92 @@ TEST(twoSphereResistance, rejectsOtherTables)
         fdm::twoSphereResistance law(fdm::resistanceTable(dict), 1);
     });
     EXPECT_NE(msg.find("is not a twoBody table"), std::string::npos) << msg;
+}
+
+
+TEST(twoSphereResistance, commonTranslationIsProjectedOut)
+{
+    // Spheres moving together feel no two-body load, and the forces on
+    // the two are opposite whatever the motion (see Description)
+    const fdm::twoSphereResistance law(twoBody());
+    const vector d = vector(0.2, 0.9, -0.4)/mag(vector(0.2, 0.9, -0.4));
+    const vector u(0.3, -1.1, 0.6);
+    for (const scalar gap : {1e-3, 0.5, 3.0})
+    {
+        const fdm::twoSphereLoads together = law.loads
+        (
+            d, gap, 1, 1.1, u, Zero, u, Zero, symmTensor::zero, true
+        );
+        for (label i = 0; i < 2; ++i)
+        {
+            EXPECT_LT(mag(together.force[i]), 1e-12) << gap;
+            EXPECT_LT(mag(together.torque[i]), 1e-12) << gap;
+        }
+        const fdm::twoSphereLoads any = law.loads
+        (
+            d, gap, 1, 1.1, u, vector(0.1, 0.2, 0.3), -0.5*u,
+            vector(-0.3, 0, 0.2), shearE, false
+        );
+        EXPECT_LT(mag(any.force[0] + any.force[1]),
+            1e-12*mag(any.force[0]));
+    }
+}
+
+
+TEST(twoSphereResistance, denseClusterResistanceIsPositiveDefinite)
+{
+    // A sphere and its 12 face-centred cubic neighbours, all gaps 1e-3
+    // between touching neighbours: isolated drag plus every pair within
+    // a gap of 2 a.  Cholesky of the 78 x 78 resistance succeeds
+    const fdm::twoSphereResistance law(twoBody());
+    const scalar s = 2.001/std::sqrt(2.0);
+    DynamicList<point> x(1, point::zero);
+    for (const label i : {-1, 1})
+    {
+        for (const label j : {-1, 1})
+        {
+            x.append(s*point(i, j, 0));
+            x.append(s*point(i, 0, j));
+            x.append(s*point(0, i, j));
+        }
+    }
+    const label m = 6*x.size();
+    std::vector<std::vector<double>> R(m, std::vector<double>(m, 0.0));
+    forAll(x, p)
+    {
+        for (label k = 0; k < 3; ++k)
+        {
+            R[6*p + k][6*p + k] += 6*pi;
+            R[6*p + 3 + k][6*p + 3 + k] += 8*pi;
+        }
+        for (label q = p + 1; q < x.size(); ++q)
+        {
+            const vector l = x[q] - x[p];
+            if (mag(l) - 2 > 2) continue;
+            const matrix Rpq = resistanceOf(law, l/mag(l), mag(l) - 2);
+            const label at[2] = {6*p, 6*q};
+            for (label i = 0; i < n; ++i)
+            {
+                for (label j = 0; j < n; ++j)
+                {
+                    R[at[i/6] + i % 6][at[j/6] + j % 6] += Rpq[i][j];
+                }
+            }
+        }
+    }
+    // Cholesky: every pivot positive
+    scalar smallest = GREAT;
+    for (label k = 0; k < m; ++k)
+    {
+        for (label j = 0; j < k; ++j) R[k][k] -= sqr(R[k][j]);
+        smallest = min(smallest, R[k][k]);
+        ASSERT_GT(R[k][k], 0) << "pivot " << k;
+        R[k][k] = std::sqrt(R[k][k]);
+        for (label i = k + 1; i < m; ++i)
+        {
+            for (label j = 0; j < k; ++j) R[i][k] -= R[i][j]*R[k][j];
+            R[i][k] /= R[k][k];
+        }
+    }
+    EXPECT_GT(smallest, 0);
 }

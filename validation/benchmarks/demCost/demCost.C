@@ -11,8 +11,9 @@ Description
     sheared Lees-Edwards cell: a jittered simple cubic lattice (phi 0.4,
     spacing 2.19 a), the tutorial's lubricatedContact (stiffness 1e6,
     roughness 1e-2, friction 0.4) at the article 3 cut-off 2a and at 1a,
-    and with article 2's Delaunay neighbours triangulated every step and
-    every 25 steps,
+    with article 2's Delaunay neighbours triangulated every step and
+    every 25 steps, and with lubrication twoSphere (the exact two-body
+    hydrodynamics and the isolated drag) at cut-off 2a,
     shear rate 1, deltaT 0.2 sqrt(m/g), Stokes number 1e-2.  After 50
     steps to fill the interactions, times `steps` steps and prints a table
     of particle-steps per second and the time per particle-step, which is
@@ -28,6 +29,7 @@ Description
 
 #include <cstdlib>
 #include <random>
+#include <string>
 
 using namespace Foam;
 
@@ -43,15 +45,26 @@ int main(int argc, char* argv[])
     // Pair selections: the cut-off (Verlet list), and the Delaunay
     // neighbours (article 2; cut-off 4a keeps every edge) triangulated
     // every step or every 25
-    struct selection { const char* name; scalar cutoff; label interval; };
+    // every step or every 25; and the complete pair law at cut-off 2a
+    struct selection
+    {
+        const char* name;
+        scalar cutoff;
+        label interval;
+        bool twoSphere;
+    };
+    const char* root = std::getenv("FDM_PROJECT_DIR");
+    const fileName table =
+        std::string(root ? root : ".") + "/data/resistance/twoBody_lambda1";
     for
     (
         const selection& sel :
         {
-            selection{"cut-off 2a", 2, 0},
-            selection{"cut-off 1a", 1, 0},
-            selection{"Delaunay, every step", 4, 1},
-            selection{"Delaunay, every 25 steps", 4, 25}
+            selection{"cut-off 2a", 2, 0, false},
+            selection{"cut-off 1a", 1, 0, false},
+            selection{"Delaunay, every step", 4, 1, false},
+            selection{"Delaunay, every 25 steps", 4, 25, false},
+            selection{"lubrication twoSphere, cut-off 2a", 2, 0, true}
         }
     )
     {
@@ -59,13 +72,22 @@ int main(int argc, char* argv[])
         {
             const label N = n*n*n;
             const scalar L = n*spacing;
+            fdm::lubricatedContact law(1, g, 1, 0.5, 1e-2, 0.4, sel.cutoff);
+            if (sel.twoSphere)
+            {
+                law.useTwoSphereHydrodynamics(table);
+            }
             fdm::lubricatedDEM dem
             (
                 fdm::periodicBox(point::zero, point(L, L, L),
                     FixedList<bool, 3>(true)),
                 1,
-                fdm::lubricatedContact(1, g, 1, 0.5, 1e-2, 0.4, sel.cutoff)
+                law
             );
+            if (sel.twoSphere)
+            {
+                dem.setDrag(1);
+            }
             if (sel.interval > 0)
             {
                 dem.setDelaunayNeighbours(sel.interval);

@@ -14,6 +14,7 @@ Description
 #include "mathematicalConstants.H"
 #include "tensor.H"
 #include "scalarField.H"
+#include "isFinite.H"
 
 using Foam::constant::mathematical::pi;
 
@@ -251,6 +252,27 @@ void Foam::fdm::lubricatedDEM::movePressureWall(const scalar dt)
 }
 
 
+void Foam::fdm::lubricatedDEM::checkDisplacement
+(
+    const label i,
+    const vector& dx
+) const
+{
+    // No sound step moves a sphere by a quarter of the cell: the step has
+    // diverged (before the position overflows or turns NaN)
+    if (!isFinite(dx) || mag(dx) > 0.25*cmptMin(box_.span()))
+    {
+        FatalErrorInFunction
+            << "Time " << time_ << ": particle " << i << " would move by "
+            << dx << " in one step (cell " << box_.span() << "): the step"
+            << " diverged.  Lower deltaT in system/controlDict (stability"
+            << " number of the last step " << stabilityNumber_ << ")." << nl
+            << "    Last good state: the latest time directory"
+            << exit(FatalError);
+    }
+}
+
+
 void Foam::fdm::lubricatedDEM::advanceParticles
 (
     const scalar dt,
@@ -302,6 +324,7 @@ void Foam::fdm::lubricatedDEM::advanceParticles
 
         vector dx = dt*v;
         dx.x() += dt*shearRate_*(position_[i].y() + 0.5*dt*v.y());
+        checkDisplacement(i, dx);
         position_[i] += dx;
         displacementSinceSearch_[i] += dt*v;
 

@@ -9,6 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <string>
+
 using namespace Foam;
 using Foam::constant::mathematical::pi;
 using unitTest::parse;
@@ -63,6 +66,43 @@ TEST(demLoads, dragSlowsAFreeSphereImplicitly)
     free.velocities()[0] = vector(1, 0, 0);
     free.step(dt);
     EXPECT_EQ(free.velocities()[0].x(), 1);
+}
+
+
+TEST(demLoads, twoSphereLubricationBringsItsOwnDrag)
+{
+    // lubrication twoSphere includes the isolated drag at the fluid
+    // viscosity: the default, and any other value an error
+    auto twoSphereDEM = []()
+    {
+        fdm::lubricatedContact law(model());
+        const char* root = std::getenv("FDM_PROJECT_DIR");
+        law.useTwoSphereHydrodynamics
+        (
+            std::string(root ? root : ".")
+          + "/data/resistance/twoBody_lambda1"
+        );
+        fdm::lubricatedDEM dem(fdm::periodicBox(point::zero,
+            point(20, 20, 20), FixedList<bool, 3>(true)), 0, law);
+        dem.addParticle(point(5, 10, 5), 1, 2);
+        return dem;
+    };
+    fdm::lubricatedDEM dem(twoSphereDEM());
+    fdm::setDrag(dem, parse("other 1;"));
+    dem.velocities()[0] = vector(1, 0, 0);
+    const scalar m = dem.masses()[0];
+    dem.step(0.01);
+    EXPECT_NEAR(dem.velocities()[0].x(), m/(m + 0.01*6*pi), 1e-14);
+
+    for (const char* bad :
+        {"drag { viscosity 0.5; }", "drag { isolatedViscosity 1; }"})
+    {
+        fdm::lubricatedDEM other(twoSphereDEM());
+        const std::string msg =
+            errorOf([&]() { fdm::setDrag(other, parse(bad)); });
+        EXPECT_NE(msg.find("lubrication twoSphere includes"),
+            std::string::npos) << bad << ": " << msg;
+    }
 }
 
 
