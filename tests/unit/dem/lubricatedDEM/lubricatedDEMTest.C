@@ -258,15 +258,16 @@ TEST(lubricatedDEM, leesEdwardsImagesGiveTheInteriorForce)
 
 TEST(lubricatedDEM, restartFromTheWrittenStateIsBitwise)
 {
+    // Steps of 5e-4, a quarter of the critical step sqrt(m/g)
     fdm::lubricatedDEM straight = randomCloud(1, 40, 5);
     fdm::lubricatedDEM first = randomCloud(1, 40, 5);
-    for (label i = 0; i < 300; ++i)
+    for (label i = 0; i < 1200; ++i)
     {
-        straight.step(2e-3);
+        straight.step(5e-4);
     }
-    for (label i = 0; i < 150; ++i)
+    for (label i = 0; i < 600; ++i)
     {
-        first.step(2e-3);
+        first.step(5e-4);
     }
     OStringStream os;
     os.precision(17);
@@ -276,9 +277,9 @@ TEST(lubricatedDEM, restartFromTheWrittenStateIsBitwise)
 
     fdm::lubricatedDEM restarted = randomCloud(1, 40, 5);
     restarted.readState(state);
-    for (label i = 0; i < 150; ++i)
+    for (label i = 0; i < 600; ++i)
     {
-        restarted.step(2e-3);
+        restarted.step(5e-4);
     }
     ASSERT_GT(straight.nInteractions(), 0);
     forAll(straight.positions(), i)
@@ -512,7 +513,7 @@ TEST(lubricatedDEM, corruptPairHistoryIsAnError)
     fdm::lubricatedDEM dem = randomCloud(1, 40, 5);
     for (label i = 0; i < 50; ++i)
     {
-        dem.step(2e-3);
+        dem.step(5e-4);
     }
     OStringStream os;
     os.precision(17);
