@@ -31,7 +31,7 @@ own two-sphere script, which explains why the thesis found agreement.
              [--jobs 2]
 
 writes results.dat, report.md and demPairShear.png here (cases under
-build/validation/demPairShear).  About 2 minutes on 2 cores.
+build/validation/demPairShear).  About 5 minutes on 2 cores.
 """
 
 import argparse
