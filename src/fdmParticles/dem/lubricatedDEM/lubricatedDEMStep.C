@@ -115,7 +115,7 @@ void Foam::fdm::lubricatedDEM::addPairLoads
     addToTotals(loads, nij, armI, armJ, i, j, totals);
     if (model_.twoSphereHydrodynamics())
     {
-        addTwoBodyLoads(i, j, nij, un, armI, armJ, totals);
+        pairForce_[k] += addTwoBodyLoads(i, j, nij, un, armI, armJ, totals);
     }
 
     ++nInteractions_;
@@ -130,7 +130,7 @@ void Foam::fdm::lubricatedDEM::addPairLoads
 }
 
 
-void Foam::fdm::lubricatedDEM::addTwoBodyLoads
+Foam::vector Foam::fdm::lubricatedDEM::addTwoBodyLoads
 (
     const label i,
     const label j,
@@ -173,6 +173,7 @@ void Foam::fdm::lubricatedDEM::addTwoBodyLoads
         stresslet_[shearLubrication][particle[s]] +=
             arm[s]*symm((h.force[s] - Fn)*nij);
     }
+    return h.force[0];
 }
 
 
