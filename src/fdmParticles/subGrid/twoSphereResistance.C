@@ -70,12 +70,12 @@ Foam::fdm::twoSphereLoads Foam::fdm::twoSphereResistance::loads
     scalarList f;
     table_.values(centreGap/a, a, f);
 
-    // s[a][b] of one letter pair from its 11 and 12 functions and parity
-    auto block = [&f](const label f11, const scalar p, const label a,
-                      const label b)
+    // Function f11 of block (i, j) from its 11 and 12 values and parity p
+    auto block = [&f](const label f11, const scalar p, const label i,
+                      const label j)
     {
         const scalar s11 = f[f11], s12 = f[f11 + 1];
-        return a == b ? (a == 0 ? s11 : p*s11) : (a == 0 ? s12 : p*s12);
+        return i == j ? (i == 0 ? s11 : p*s11) : (i == 0 ? s12 : p*s12);
     };
 
     // The pair's common translation projected out, of the velocities here
@@ -147,8 +147,8 @@ void Foam::fdm::twoSphereResistance::removeSqueeze
     // coefficient of XA11 (3/2 pi: thesis 2, article 1, eq 4), on the
     // whole relative normal velocity, ambient strain included: what the
     // implicit normal model applies.  Removed with its own-velocity
-    // blocks; the rest of X^G's 1/xi term and the O(1) term that the
-    // ambient part (2a + u_n)/u_n brings stay in the loads
+    // blocks.  Its ambient part cancels the 1/xi terms of X^G, so that
+    // what stays is logarithmic at contact
     const scalar a = 2*radius1*radius2/(radius1 + radius2);
     const scalar c =
         viscosity_*squeeze_*sqr(a)/max(centreGap, table_.xMin()*a);
