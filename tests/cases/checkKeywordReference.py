@@ -62,8 +62,8 @@ INTERNAL = {
     ("src/fdmParticles/functionObjects/suspensionStress/suspensionStress.C",
      "state"),
     ("src/fdmParticles/dem/lubricatedDEM/lubricatedDEMState.C", "dict"),
-    ("src/fdmParticles/subGrid/resistanceTable.C", "dict"),
-    ("src/fdmParticles/subGrid/resistanceTable.C", "fd"),
+    ("src/fdmParticles/subGrid/resistanceTableRead.C", "dict"),
+    ("src/fdmParticles/subGrid/resistanceTableRead.C", "fd"),
     ("src/fdmParticles/subGrid/subGridModel/frameInvariantSubGrid.C",
      "table"),
 }
