@@ -21,6 +21,7 @@ import sys
 import numpy as np
 
 from . import subGridBase as sg
+from .pairResistance import FACTOR
 from . import twoSphere as ts
 from . import wall
 
@@ -51,8 +52,6 @@ def two_body_grid(n=260, xmax=10.0, n_far=200):
 # pairResistance, minus the isolated sphere (6 pi, 8 pi on the 11 diagonals)
 TWO_BODY = ["XA11", "XA12", "YA11", "YA12", "YB11", "YB12", "XC11", "XC12",
             "YC11", "YC12", "XG11", "XG12", "YG11", "YG12", "YH11", "YH12"]
-_FACTOR = {"A": 6 * np.pi, "B": 4 * np.pi, "G": 4 * np.pi, "C": 8 * np.pi,
-           "H": 8 * np.pi}
 
 
 def _hat_name(name):
@@ -60,12 +59,12 @@ def _hat_name(name):
 
 
 def _isolated(name):
-    return _FACTOR[name[1]] if name in ("XA11", "YA11", "XC11", "YC11") \
+    return FACTOR[name[1]] if name in ("XA11", "YA11", "XC11", "YC11") \
         else 0.0
 
 
 def two_body_function(name, x):
-    return _FACTOR[name[1]] * ts.hat(_hat_name(name), x, 1.0) \
+    return FACTOR[name[1]] * ts.hat(_hat_name(name), x, 1.0) \
         - _isolated(name)
 
 
@@ -76,7 +75,7 @@ def two_body_table(grid):
     out, worst = {}, {}
     xm = np.sqrt(grid[1:-1] * grid[2:])
     for name in TWO_BODY:
-        fac = _FACTOR[name[1]]
+        fac = FACTOR[name[1]]
         g = tuple(fac * v for v in ts.singular(_hat_name(name), 1.0))
         f = two_body_function(name, grid[1:])
         rem = np.empty_like(grid)

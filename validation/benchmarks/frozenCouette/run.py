@@ -66,7 +66,8 @@ displacement, first order in the gradients; tried, then removed) moved
 lambda by 1.5 % per step but left the first lambda residual of a step
 unchanged (1.17e-2 against 1.16e-2, tutorial cell 8^3 a1, phi 0.3, 50
 steps at 4e-3; 1e-4 at 4e-5): the change of a step is the flow's
-response to the new configuration, not the particles' translation.  Keeping the Anderson differences
+response to the new configuration, not the particles' translation.
+Keeping the Anderson differences
 from one step to the next (tried, then removed) took 13-21 outer
 iterations per step against 12-15: the map changes between steps more
 than its secant model carries over.  Inexact inner solves with one
