@@ -169,11 +169,16 @@ void Foam::fdm::resistanceTable::values
 (
     const scalar x,
     const scalar a1,
-    scalarList& f
+    UList<scalar>& f
 ) const
 {
     const wordList& names = functionNames();
-    f.setSize(names.size());
+    if (f.size() != names.size())
+    {
+        FatalErrorInFunction
+            << "Resistance table " << name_ << " has " << names.size()
+            << " functions, asked for " << f.size() << abort(FatalError);
+    }
     const scalar xc = min(max(x, xMin_), gap_.last());
     scalar w;
     const label i = interval(xc, w);

@@ -8,6 +8,20 @@
 #include "resistanceTensorForms.H"
 #include "tensor.H"
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+const char* const Foam::fdm::twoSphereResistance::defaultTableName =
+    "$FDM_PROJECT_DIR/data/resistance/twoBody_lambda1";
+
+
+Foam::fileName Foam::fdm::twoSphereResistance::defaultTable()
+{
+    fileName table(defaultTableName);
+    table.expand();
+    return table;
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fdm::twoSphereResistance::twoSphereResistance
@@ -65,12 +79,15 @@ Foam::fdm::twoSphereLoads Foam::fdm::twoSphereResistance::loads
     const bool withSqueeze
 ) const
 {
-    // Equal-sphere functions at the harmonic-mean radius (see Description)
+    // Equal-sphere functions at the harmonic-mean radius (see Description),
+    // on the stack (one pair of a DEM step)
     const scalar a = 2*radius1*radius2/(radius1 + radius2);
-    scalarList f;
+    FixedList<scalar, resistanceTable::nTwoBodyFunctions> values;
+    UList<scalar> f(values.data(), values.size());
     table_.values(centreGap/a, a, f);
 
     // Function f11 of block (i, j) from its 11 and 12 values and parity p
+    typedef resistanceTable rt;
     auto block = [&f](const label f11, const scalar p, const label i,
                       const label j)
     {
@@ -90,17 +107,21 @@ Foam::fdm::twoSphereLoads Foam::fdm::twoSphereResistance::loads
         vector F(Zero), T(Zero);
         for (label j = 0; j < 2; ++j)
         {
-            F -= axialForm(block(XA11, 1, i, j), block(YA11, 1, i, j), d)
-                 & U[j];
-            F -= epsilonForm(-block(YB11, -1, j, i), d) & W[j];
+            F -= axialForm
+            (
+                block(rt::XA11, 1, i, j), block(rt::YA11, 1, i, j), d
+            ) & U[j];
+            F -= epsilonForm(-block(rt::YB11, -1, j, i), d) & W[j];
             F += strainContractG
             (
-                block(XG11, -1, j, i), block(YG11, -1, j, i), d, E
+                block(rt::XG11, -1, j, i), block(rt::YG11, -1, j, i), d, E
             );
-            T -= epsilonForm(block(YB11, -1, i, j), d) & U[j];
-            T -= axialForm(block(XC11, 1, i, j), block(YC11, 1, i, j), d)
-                 & W[j];
-            T += strainContractH(block(YH11, 1, j, i), d, E);
+            T -= epsilonForm(block(rt::YB11, -1, i, j), d) & U[j];
+            T -= axialForm
+            (
+                block(rt::XC11, 1, i, j), block(rt::YC11, 1, i, j), d
+            ) & W[j];
+            T += strainContractH(block(rt::YH11, 1, j, i), d, E);
         }
         out.force[i] = eta*F;
         out.torque[i] = eta*T;
@@ -110,14 +131,14 @@ Foam::fdm::twoSphereLoads Foam::fdm::twoSphereResistance::loads
         (
             axialForm
             (
-                block(XA11, 1, 0, 0) - block(XA11, 1, 0, 1),
-                block(YA11, 1, 0, 0) - block(YA11, 1, 0, 1),
+                block(rt::XA11, 1, 0, 0) - block(rt::XA11, 1, 0, 1),
+                block(rt::YA11, 1, 0, 0) - block(rt::YA11, 1, 0, 1),
                 d
             )
         );
         out.rotationDamping[i] = eta*symm
         (
-            axialForm(block(XC11, 1, i, i), block(YC11, 1, i, i), d)
+            axialForm(block(rt::XC11, 1, i, i), block(rt::YC11, 1, i, i), d)
         );
     }
     const vector commonForce = 0.5*(out.force[0] + out.force[1]);
@@ -125,7 +146,7 @@ Foam::fdm::twoSphereLoads Foam::fdm::twoSphereResistance::loads
     out.force[1] -= commonForce;
     if (!withSqueeze)
     {
-        removeSqueeze(d, centreGap, radius1, radius2, U1, U2, E, out);
+        removeSqueeze(d, centreGap, a, radius1 + radius2, U1, U2, E, out);
     }
     return out;
 }
@@ -135,8 +156,8 @@ void Foam::fdm::twoSphereResistance::removeSqueeze
 (
     const vector& d,
     const scalar centreGap,
-    const scalar radius1,
-    const scalar radius2,
+    const scalar a,
+    const scalar radiusSum,
     const vector& U1,
     const vector& U2,
     const symmTensor& E,
@@ -149,10 +170,9 @@ void Foam::fdm::twoSphereResistance::removeSqueeze
     // implicit normal model applies.  Removed with its own-velocity
     // blocks.  Its ambient part cancels the 1/xi terms of X^G, so that
     // what stays is logarithmic at contact
-    const scalar a = 2*radius1*radius2/(radius1 + radius2);
     const scalar c =
         viscosity_*squeeze_*sqr(a)/max(centreGap, table_.xMin()*a);
-    const vector r = (centreGap + radius1 + radius2)*d;
+    const vector r = (centreGap + radiusSum)*d;
     const scalar approach = ((U2 - U1) + (E & r)) & d;
     const vector F = c*approach*d;
     loads.force[0] -= F;

@@ -30,13 +30,9 @@ typedef std::array<double, n> column;
 
 fdm::twoSphereResistance twoBody(const scalar xMin = 1e-6)
 {
-    const char* root = std::getenv("FDM_PROJECT_DIR");
     return fdm::twoSphereResistance
     (
-        fileName(std::string(root ? root : ".")
-               + "/data/resistance/twoBody_lambda1"),
-        1,
-        xMin
+        fdm::twoSphereResistance::defaultTable(), 1, xMin
     );
 }
 

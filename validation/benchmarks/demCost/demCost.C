@@ -29,7 +29,6 @@ Description
 
 #include <cstdlib>
 #include <random>
-#include <string>
 
 using namespace Foam;
 
@@ -53,9 +52,6 @@ int main(int argc, char* argv[])
         label interval;
         bool twoSphere;
     };
-    const char* root = std::getenv("FDM_PROJECT_DIR");
-    const fileName table =
-        std::string(root ? root : ".") + "/data/resistance/twoBody_lambda1";
     for
     (
         const selection& sel :
@@ -75,7 +71,7 @@ int main(int argc, char* argv[])
             fdm::lubricatedContact law(1, g, 1, 0.5, 1e-2, 0.4, sel.cutoff);
             if (sel.twoSphere)
             {
-                law.useTwoSphereHydrodynamics(table);
+                law.useTwoSphereHydrodynamics();
             }
             fdm::lubricatedDEM dem
             (

@@ -78,7 +78,7 @@ Foam::fdm::lubricatedContact fromDictionary(const Foam::dictionary& dict)
             dict.getOrDefault<fileName>
             (
                 "table",
-                "$FDM_PROJECT_DIR/data/resistance/twoBody_lambda1"
+                twoSphereResistance::defaultTableName
             )
         );
         table.expand();

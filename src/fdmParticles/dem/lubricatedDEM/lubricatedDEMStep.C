@@ -38,7 +38,7 @@ Foam::fdm::lubricatedDEM::resetLoads()
     return stepTotals
     {
         List<symmTensor>(n, Zero),
-        List<symmTensor>(n, Zero),
+        List<symmTensor>(model_.twoSphereHydrodynamics() ? n : 0, Zero),
         labelList(n, Zero),
         scalarList(n, Zero),
         scalarList(n, Zero)

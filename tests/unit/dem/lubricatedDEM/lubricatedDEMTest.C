@@ -11,7 +11,6 @@
 
 #include <gtest/gtest.h>
 #include <cfenv>
-#include <cstdlib>
 #include <cmath>
 #include <random>
 
@@ -571,15 +570,12 @@ TEST(lubricatedDEM, twoSphereLubricationMovesAPairAsStokesFlow)
     // (golden A(1) = 0.1866626359, B(1) = 0.0222799832, from
     // fdmResistance.pairShear).  Along x (E.r normal to r) B alone; along
     // (1, 1, 0) (E.r along r) A alone, the gap closing by 2e-3 meanwhile
-    const char* root = std::getenv("FDM_PROJECT_DIR");
-    const fileName table =
-        std::string(root ? root : ".") + "/data/resistance/twoBody_lambda1";
     const scalar golden[2] = {0.0222799832, 0.1866626359};
     const vector dirs[2] = {vector(1, 0, 0), vector(1, 1, 0)/std::sqrt(2.0)};
     for (label k = 0; k < 2; ++k)
     {
         fdm::lubricatedContact law(1, 1e5, 1, 0.5, 0, 0, 4);
-        law.useTwoSphereHydrodynamics(table);
+        law.useTwoSphereHydrodynamics();
         fdm::lubricatedDEM dem(cube(30), 1, law);
         dem.setDrag(1);
         const vector r = 3*dirs[k];

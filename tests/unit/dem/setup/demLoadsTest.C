@@ -9,7 +9,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <string>
 
 using namespace Foam;
@@ -76,12 +75,7 @@ TEST(demLoads, twoSphereLubricationBringsItsOwnDrag)
     auto twoSphereDEM = []()
     {
         fdm::lubricatedContact law(model());
-        const char* root = std::getenv("FDM_PROJECT_DIR");
-        law.useTwoSphereHydrodynamics
-        (
-            std::string(root ? root : ".")
-          + "/data/resistance/twoBody_lambda1"
-        );
+        law.useTwoSphereHydrodynamics();
         fdm::lubricatedDEM dem(fdm::periodicBox(point::zero,
             point(20, 20, 20), FixedList<bool, 3>(true)), 0, law);
         dem.addParticle(point(5, 10, 5), 1, 2);
