@@ -8,14 +8,12 @@
 #include "mathematicalConstants.H"
 #include "point.H"
 #include "DynamicList.H"
-#include <vector>
 #include "unitTestHelpers.H"
 
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
-#include <array>
 #include <cmath>
-#include <cstdlib>
 #include <string>
 
 using namespace Foam;
@@ -25,8 +23,8 @@ namespace
 {
 
 const label n = 12;
-typedef std::array<std::array<double, n>, n> matrix;
-typedef std::array<double, n> column;
+typedef Eigen::Matrix<double, n, n> matrix;
+typedef Eigen::Matrix<double, n, 1> column;
 
 fdm::twoSphereResistance twoBody(const scalar xMin = 1e-6)
 {
@@ -74,44 +72,13 @@ matrix resistanceOf
     matrix R;
     for (label j = 0; j < n; ++j)
     {
-        column e{};
-        e[j] = 1;
-        const column c = loadsOf(law, d, gap, e, symmTensor::zero, a2);
-        for (label i = 0; i < n; ++i)
-        {
-            R[i][j] = -c[i];
-        }
+        const column c = loadsOf
+        (
+            law, d, gap, column::Unit(j), symmTensor::zero, a2
+        );
+        R.col(j) = -c;
     }
     return R;
-}
-
-// Gaussian elimination with partial pivoting
-column solve(matrix A, column b)
-{
-    for (label k = 0; k < n; ++k)
-    {
-        label p = k;
-        for (label i = k + 1; i < n; ++i)
-        {
-            if (std::abs(A[i][k]) > std::abs(A[p][k])) p = i;
-        }
-        std::swap(A[k], A[p]);
-        std::swap(b[k], b[p]);
-        for (label i = k + 1; i < n; ++i)
-        {
-            const double m = A[i][k]/A[k][k];
-            for (label j = k; j < n; ++j) A[i][j] -= m*A[k][j];
-            b[i] -= m*b[k];
-        }
-    }
-    column x;
-    for (label i = n - 1; i >= 0; --i)
-    {
-        double s = b[i];
-        for (label j = i + 1; j < n; ++j) s -= A[i][j]*x[j];
-        x[i] = s/A[i][i];
-    }
-    return x;
 }
 
 // Relative velocity of two free equal spheres (a = 1) in simple shear,
@@ -127,10 +94,11 @@ vector relativeDisturbance
     matrix R = resistanceOf(law, d, mag(r) - 2);
     for (label k = 0; k < n; ++k)
     {
-        R[k][k] += (k % 6) < 3 ? 6*pi : 8*pi;
+        R(k, k) += (k % 6) < 3 ? 6*pi : 8*pi;
     }
-    const column strain = loadsOf(law, d, mag(r) - 2, column{}, shearE);
-    const column x = solve(R, strain);
+    const column strain =
+        loadsOf(law, d, mag(r) - 2, column::Zero(), shearE);
+    const column x = R.partialPivLu().solve(strain);
     return vector(x[6] - x[0], x[7] - x[1], x[8] - x[2]);
 }
 
@@ -180,7 +148,7 @@ TEST(twoSphereResistance, resistanceIsSymmetricAndRelabels)
         {
             for (label j = 0; j < i; ++j)
             {
-                EXPECT_NEAR(R[i][j], R[j][i], 1e-10*(1 + std::abs(R[i][j])))
+                EXPECT_NEAR(R(i, j), R(j, i), 1e-10*(1 + std::abs(R(i, j))))
                     << "gap " << gap << " entry " << i << ' ' << j;
             }
         }
@@ -308,7 +276,7 @@ TEST(twoSphereResistance, denseClusterResistanceIsPositiveDefinite)
 {
     // A sphere and its 12 face-centred cubic neighbours, all gaps 1e-3
     // between touching neighbours: isolated drag plus every pair within
-    // a gap of 2 a.  Cholesky of the 78 x 78 resistance succeeds
+    // a gap of 2 a.  The 78 x 78 resistance has no eigenvalue <= 0
     const fdm::twoSphereResistance law(twoBody());
     const scalar s = 2.001/std::sqrt(2.0);
     DynamicList<point> x(1, point::zero);
@@ -322,13 +290,13 @@ TEST(twoSphereResistance, denseClusterResistanceIsPositiveDefinite)
         }
     }
     const label m = 6*x.size();
-    std::vector<std::vector<double>> R(m, std::vector<double>(m, 0.0));
+    Eigen::MatrixXd R = Eigen::MatrixXd::Zero(m, m);
     forAll(x, p)
     {
         for (label k = 0; k < 3; ++k)
         {
-            R[6*p + k][6*p + k] += 6*pi;
-            R[6*p + 3 + k][6*p + 3 + k] += 8*pi;
+            R(6*p + k, 6*p + k) += 6*pi;
+            R(6*p + 3 + k, 6*p + 3 + k) += 8*pi;
         }
         for (label q = p + 1; q < x.size(); ++q)
         {
@@ -336,28 +304,16 @@ TEST(twoSphereResistance, denseClusterResistanceIsPositiveDefinite)
             if (mag(l) - 2 > 2) continue;
             const matrix Rpq = resistanceOf(law, l/mag(l), mag(l) - 2);
             const label at[2] = {6*p, 6*q};
-            for (label i = 0; i < n; ++i)
+            for (label a = 0; a < 2; ++a)
             {
-                for (label j = 0; j < n; ++j)
+                for (label b = 0; b < 2; ++b)
                 {
-                    R[at[i/6] + i % 6][at[j/6] + j % 6] += Rpq[i][j];
+                    R.block<6, 6>(at[a], at[b]) += Rpq.block<6, 6>(6*a, 6*b);
                 }
             }
         }
     }
-    // Cholesky: every pivot positive
-    scalar smallest = GREAT;
-    for (label k = 0; k < m; ++k)
-    {
-        for (label j = 0; j < k; ++j) R[k][k] -= sqr(R[k][j]);
-        smallest = min(smallest, R[k][k]);
-        ASSERT_GT(R[k][k], 0) << "pivot " << k;
-        R[k][k] = std::sqrt(R[k][k]);
-        for (label i = k + 1; i < m; ++i)
-        {
-            for (label j = 0; j < k; ++j) R[i][k] -= R[i][j]*R[k][j];
-            R[i][k] /= R[k][k];
-        }
-    }
+    typedef Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigenSolver;
+    const scalar smallest = eigenSolver(R).eigenvalues().minCoeff();
     EXPECT_GT(smallest, 0);
 }
