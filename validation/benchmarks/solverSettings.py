@@ -28,6 +28,8 @@ REFERENCE = (("SIMPLEC.nOuterCorrectors", 3000, "fv"),
              ("solvers.p.relTol", 0, "fv"),
              ("solvers.U.tolerance", 1e-12, "fv"),
              ("solvers.U.relTol", 0, "fv"))
+GAMG_U = (("solvers.U", "{solver GAMG; smoother GaussSeidel; "
+           "tolerance 1e-7; relTol 0.1;}", "fv"),)
 # Each setting: the dictionary entries it changes from the case's own
 SETTINGS = {
     "default": PREVIOUS,
@@ -42,8 +44,7 @@ SETTINGS = {
     # Parts to add to a setting with +: NAME+nCorr1
     "nCorr1": (("SIMPLEC.nCorrectors", 1, "fv"),),
     "loose": (("solvers.p.relTol", 0.2, "fv"), ("solvers.U.relTol", 0.3, "fv")),
-    "gamgU": PREVIOUS + (("solvers.U", "{solver GAMG; smoother GaussSeidel; "
-                          "tolerance 1e-7; relTol 0.1;}", "fv"),),
+    "gamgU": PREVIOUS + GAMG_U,
     "relax0.97": PREVIOUS + (("relaxationFactors.equations.U", 0.97, "fv"),),
     "reference": REFERENCE,
     # The steady solve of a frozen configuration (what validations do):
@@ -58,6 +59,20 @@ SETTINGS.update(
     ("layerMeanAlpha%s" % F, SETTINGS["layerMean"]
      + (("coupling.alphaLambdaFactor", F, "pp"),))
     for F in ("0.25", "0.5", "2"))
+
+# The U under-relaxation as a part (layerMean+relaxU0.99): in SIMPLEC it is
+# a pseudo-time step of about alpha/(1 - alpha) cell diffusion times per
+# outer iteration, the rate at which a particle's rigid motion reaches the
+# flow around it
+SETTINGS.update(
+    ("relaxU%s" % a, (("relaxationFactors.equations.U", a, "fv"),))
+    for a in ("0.98", "0.99", "0.995"))
+# The Anderson depth as a part (layerMean+depth16)
+SETTINGS.update(
+    ("depth%d" % m, (("SIMPLEC.accelerationDepth", m, "fv"),))
+    for m in (4, 12, 16, 24))
+# GAMG for U as a part (layerMean+relaxU0.99+gamg)
+SETTINGS["gamg"] = GAMG_U
 
 
 def check_setting(setting):

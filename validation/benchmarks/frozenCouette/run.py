@@ -119,6 +119,28 @@ rms from the reference at any residual.  A drag estimate 6 pi nu a (times
 c) on the diagonal of the particle system, balanced by its value at the
 last iterate, was slower at c = 0.5, 2 and -0.3 and diverged at c = -1.
 
+The U under-relaxation (settings part relaxU<a>; tried, left at 0.9).  In
+SIMPLEC it is a pseudo-time step of about a/(1 - a) cell diffusion times
+per outer iteration, and for an isolated particle that is what limits its
+rigid motion: a sphere pushed through the sheared channel (the
+sheared-sphere case test, Delta = a/5) reaches 0.84 of its velocity after
+140 plain outer iterations at 0.9 and 0.99 of it after 60 at 0.99; with
+Anderson it is within 1e-3 of its velocity after 60 iterations at 0.9 and
+20 at 0.99, the converged values 2e-4 apart.  On this snapshot (strain
+1, one step) it does not pay: 12, 15, 20 outer iterations to the lambda
+residual 1e-3 at 0.98, 0.99, 0.995 against 12 at 0.9, and at 0.99 the
+errors against its own reference are the default's (1.2e-3 against
+1.1e-3 gammaDot a1 rms; GAMG for U: 22 iterations, 1.0e-3).  The steady
+reference at 0.99 takes 664 outer iterations (1045 core-s) against 150
+(191).  And the converged solution moves with it, by 3.6e-3 gammaDot a1
+rms (7.9e-3 max) in the particle velocities and 2.2e-3 of Sigma_xy in the
+hydrodynamic Sigma_xy.  Presumably the mechanism found for alpha_lambda
+above (not isolated further): where supports overlap, the velocity
+correction of eq 2.53 does not vanish at the fixed point, so the
+relaxation term, which acts on the corrected velocity, stays in it; the
+single sphere, without overlaps, moves by at most 2e-4.  The Anderson depth (part depth<m>): 14, 12, 12, 12 outer
+iterations at m = 4, 8, 16, 24, the same errors.
+
     run.py --snapshot CASE:T[,T...] [--snapshot ...] [--steps N]
            [--settings default,thesis,thesis10,default@1e-4]
 
