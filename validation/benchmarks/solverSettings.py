@@ -71,6 +71,12 @@ SETTINGS.update(
 SETTINGS.update(
     ("depth%d" % m, (("SIMPLEC.accelerationDepth", m, "fv"),))
     for m in (4, 12, 16, 24))
+# The lambda step factor as a part (reference+alphaF0.5)
+SETTINGS.update(
+    ("alphaF%s" % F, (("coupling.alphaLambdaFactor", F, "pp"),))
+    for F in ("0.25", "0.5"))
+# Consistent overlapping supports as a part (reference+consistent)
+SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 # GAMG for U as a part (layerMean+relaxU0.99+gamg)
 SETTINGS["gamg"] = GAMG_U
 

@@ -233,6 +233,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     lambdaTolerance_(0),
     lambdaToleranceFirstStep_(0),
     solveTolerance_(1e-6),
+    consistentOverlaps_(false),
     box_(point::zero, point::one, FixedList<bool, 3>(false)),
     domainVolume_(gSum(mesh.V())),
     solved_(false),

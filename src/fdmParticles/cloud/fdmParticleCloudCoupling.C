@@ -27,7 +27,8 @@ void Foam::fdmParticleCloud::buildStencils()
         state_.position,
         state_.radius,
         indicator_,
-        box_
+        box_,
+        consistentOverlaps_
     );
     lambdaPrev_.setSize(stencils_.supportCells().size());
 
@@ -36,6 +37,34 @@ void Foam::fdmParticleCloud::buildStencils()
     fdm::sumOverRanks(moments_);
 
     timings_.indicators += clock.elapsedTime();
+}
+
+
+Foam::scalar Foam::fdmParticleCloud::supportOverlapReach() const
+{
+    if (!consistentOverlaps_)
+    {
+        return 0;
+    }
+    const scalar a = max(state_.radius);
+    return 2*(indicator_.supportRadius(a) - a);
+}
+
+
+void Foam::fdmParticleCloud::findOverlapBlocks()
+{
+    if (!consistentOverlaps_)
+    {
+        return;
+    }
+    fdm::selectNearPairs
+    (
+        box_, state_.position, state_.radius, supportOverlapReach(), near_,
+        overlapPairs_
+    );
+    overlapBlocks_ =
+        stencils_.overlapBlocks(mesh_.V(), alphaLambda_, overlapPairs_);
+    fdm::sumOverRanks(overlapBlocks_);
 }
 
 
@@ -75,6 +104,10 @@ void Foam::fdmParticleCloud::assembleSystem
     }
     // Sub-grid resistance and implicit contact stiffness on the left of eq
     // 2.43, per unit fluid density
+    fdm::couplingStencils::addOverlapBlocks
+    (
+        overlapPairs_, overlapBlocks_, system_
+    );
     subGrid_->addTo(system_, nu_);
     contacts_->addTo(system_, 1/rhoFluid_);
 }
@@ -117,9 +150,10 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
     const scalar reach = max
     (
         max(subGrid_->pairReach(state_.radius), smallestGapReach()),
-        contacts_->pairReach()
+        max(contacts_->pairReach(), supportOverlapReach())
     );
     fdm::findNearPairs(box_, state_.position, state_.radius, reach, near_);
+    findOverlapBlocks();
 
     subGrid_->update(state_.position, state_.radius, box_, near_);
     if (verbose_)

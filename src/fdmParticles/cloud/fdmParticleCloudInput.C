@@ -52,10 +52,14 @@ void Foam::fdmParticleCloud::readCoupling()
         c,
         {
             "lambdaTolerance", "lambdaToleranceFirstStep",
-            "particleSolveTolerance", "alphaLambdaFactor"
+            "particleSolveTolerance", "alphaLambdaFactor", "overlaps"
         },
         "coupling block"
     );
+
+    const word overlaps(c.getOrDefault<word>("overlaps", "thesis"));
+    fdm::checkChoice(c, "overlaps", overlaps, {"thesis", "consistent"});
+    consistentOverlaps_ = (overlaps == "consistent");
 
     lambdaTolerance_ = c.get<scalar>("lambdaTolerance");
     requirePositive(c, "lambdaTolerance", lambdaTolerance_, true);

@@ -42,7 +42,8 @@ void Foam::fdm::couplingStencils::build
     const pointField& positions,
     const scalarField& radii,
     const indicatorFunctions& indicator,
-    const periodicBox& box
+    const periodicBox& box,
+    const bool consistentOverlaps
 )
 {
     start_.setSize(positions.size() + 1);
@@ -50,6 +51,8 @@ void Foam::fdm::couplingStencils::build
     offset_.clear();
     Ju_.clear();
     Jlambda_.clear();
+    owner_.clear();
+    consistentOverlaps_ = consistentOverlaps;
 
     const List<vector> shifts(imageShifts(box));
     DynamicList<label> found;
@@ -68,6 +71,7 @@ void Foam::fdm::couplingStencils::build
             {
                 const vector r = cellCentres[celli] - centre;
                 cell_.append(celli);
+                owner_.append(p);
                 offset_.append(r);
                 Ju_.append(indicator.Ju(mag(r), a));
                 Jlambda_.append(1);
@@ -91,6 +95,7 @@ void Foam::fdm::couplingStencils::build
         Jlambda_[e] = 1.0/count[cell_[e]];
     }
     supportCells_.transfer(support);
+    findOverlaps(count);
 }
 
 
@@ -102,7 +107,7 @@ Foam::fdm::couplingStencils::moments(const scalarField& V) const
     {
         for (label e = start_[p]; e < start_[p + 1]; ++e)
         {
-            m[p].add(Ju_[e], offset_[e], V[cell_[e]]);
+            m[p].add(Jmass_[e], offset_[e], V[cell_[e]]);
         }
     }
     return m;
@@ -125,7 +130,7 @@ Foam::fdm::couplingStencils::integrals
         {
             const label c = cell_[e];
             const vector& r = offset_[e];
-            const vector wu = (Ju_[e]*V[c])*u[c];
+            const vector wu = (Jintegral_[e]*V[c])*u[c];
             const vector wl = (Jlambda_[e]*V[c])*lambda[c];
             fu += wu;
             tu += r ^ wu;
@@ -166,10 +171,17 @@ void Foam::fdm::couplingStencils::correctVelocity
     UList<vector>& u
 ) const
 {
+    // Consistent overlaps: the cells of several supports (J_lambda < 1)
+    // first, from the uncorrected u; the loop below leaves them
+    correctOverlapVelocity(U, Omega, u);
     for (label p = 0; p < size(); ++p)
     {
         for (label e = start_[p]; e < start_[p + 1]; ++e)
         {
+            if (consistentOverlaps_ && Jlambda_[e] < 1)
+            {
+                continue;
+            }
             const label c = cell_[e];
             const vector rigid = U[p] + (Omega[p] ^ offset_[e]);
             u[c] += Ju_[e]*(rigid - u[c]);

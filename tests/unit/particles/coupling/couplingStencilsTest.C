@@ -2,105 +2,12 @@
 // spreading of the FDM coupling, thesis 1 eq 2.53, and the force dipole of
 // eq 2.66) on a lattice of cell centres, without a mesh
 
-#include "couplingStencils.H"
+#include "couplingStencilsFixtures.H"
 #include "HashSet.H"
 
 #include <gtest/gtest.h>
 
 using namespace Foam;
-
-namespace
-{
-
-// Cell centres of n^3 cubic cells of side h filling [0, n h]^3
-struct lattice
-{
-    scalar h;
-    pointField centres;
-    scalarField V;
-
-    lattice(const label n, const scalar h)
-    :
-        h(h),
-        centres(n*n*n),
-        V(n*n*n, h*h*h)
-    {
-        label c = 0;
-        for (label k = 0; k < n; ++k)
-        for (label j = 0; j < n; ++j)
-        for (label i = 0; i < n; ++i)
-        {
-            centres[c++] = h*vector(i + 0.5, j + 0.5, k + 0.5);
-        }
-    }
-};
-
-
-fdm::periodicBox box(const scalar L, const bool periodicX)
-{
-    FixedList<bool, 3> periodic(false);
-    periodic[0] = periodicX;
-    return fdm::periodicBox(point::zero, point(L, L, L), periodic);
-}
-
-
-// Stencils of spheres of radius a at the given centres on a 16^3 lattice of
-// spacing 0.25 (a/Delta = 4 for a = 1)
-fdm::couplingStencils stencilsOf
-(
-    const lattice& mesh,
-    const pointField& centres,
-    const scalar a,
-    const bool periodicX
-)
-{
-    const fdm::pointBins bins(mesh.centres, 4*mesh.h);
-    const fdm::indicatorFunctions J(5, 0.3, mesh.h);
-    fdm::couplingStencils s;
-    s.build
-    (
-        mesh.centres,
-        bins,
-        centres,
-        scalarField(centres.size(), a),
-        J,
-        box(16*mesh.h, periodicX)
-    );
-    return s;
-}
-
-
-// The stencils of one sphere at x
-fdm::couplingStencils stencilsOf
-(
-    const lattice& mesh,
-    const point& x,
-    const scalar a,
-    const bool periodicX
-)
-{
-    return stencilsOf(mesh, pointField(1, x), a, periodicX);
-}
-
-
-// A rigid motion U + Omega x (x - x0) at every cell
-List<vector> rigidField
-(
-    const pointField& x,
-    const point& x0,
-    const vector& U,
-    const vector& Omega
-)
-{
-    List<vector> u(x.size());
-    forAll(x, c)
-    {
-        u[c] = U + (Omega ^ (x[c] - x0));
-    }
-    return u;
-}
-
-} // namespace
 
 
 TEST(couplingStencils, imageShiftsCoverThePeriodicNeighbours)
