@@ -134,11 +134,13 @@ errors against its own reference are the default's (1.2e-3 against
 reference at 0.99 takes 664 outer iterations (1045 core-s) against 150
 (191).  And the converged solution moves with it, by 3.6e-3 gammaDot a1
 rms (7.9e-3 max) in the particle velocities and 2.2e-3 of Sigma_xy in the
-hydrodynamic Sigma_xy.  Presumably the mechanism found for alpha_lambda
-above (not isolated further): where supports overlap, the velocity
-correction of eq 2.53 does not vanish at the fixed point, so the
-relaxation term, which acts on the corrected velocity, stays in it; the
-single sphere, without overlaps, moves by at most 2e-4.  The Anderson depth (part depth<m>): 14, 12, 12, 12 outer
+hydrodynamic Sigma_xy, and by 3.2e-3 with consistent overlaps (below),
+so it is not the overlaps.  Presumably the Rhie-Chow pressure term of
+the face flux, which SIMPLEC's fixed point carries times the relaxation
+factor and which is largest where the pressure balances lambda at the
+particle surfaces (not isolated further; a relaxation-independent face
+flux would remove it); the single sphere moves by at most 2e-4.  The
+Anderson depth (part depth<m>): 14, 12, 12, 12 outer
 iterations at m = 4, 8, 16, 24, the same errors.
 
 Consistent overlaps (part consistent: particleProperties coupling
