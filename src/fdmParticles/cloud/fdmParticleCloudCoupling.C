@@ -102,8 +102,9 @@ void Foam::fdmParticleCloud::assembleSystem
             }
         }
     }
-    // Sub-grid resistance and implicit contact stiffness on the left of eq
-    // 2.43, per unit fluid density
+    // Neighbours coupled through shared cells (consistent overlaps); the
+    // sub-grid resistance and the implicit contact stiffness on the left
+    // of eq 2.43, per unit fluid density
     fdm::couplingStencils::addOverlapBlocks
     (
         overlapPairs_, overlapBlocks_, system_
