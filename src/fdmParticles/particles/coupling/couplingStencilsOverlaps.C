@@ -47,34 +47,28 @@ void Foam::fdm::couplingStencils::findOverlaps(const labelUList& count)
         return;
     }
 
-    // Overlap cells in order of first appearance, their entries grouped
+    // Overlap cells in order of first appearance, each with its entries
     labelList slot(count.size(), -1);
-    label nOverlap = 0;
-    labelList nEntries;
-    DynamicList<label> entriesPerSlot;
+    DynamicList<label> start(1, 0);
     forAll(cell_, e)
     {
         const label c = cell_[e];
         if (count[c] > 1 && slot[c] < 0)
         {
-            slot[c] = nOverlap++;
-            entriesPerSlot.append(count[c]);
+            slot[c] = start.size() - 1;
+            start.append(start.last() + count[c]);
         }
     }
-    overlapStart_.setSize(nOverlap + 1);
-    overlapStart_[0] = 0;
-    for (label i = 0; i < nOverlap; ++i)
-    {
-        overlapStart_[i + 1] = overlapStart_[i] + entriesPerSlot[i];
-    }
-    overlapEntries_.setSize(overlapStart_[nOverlap]);
-    nEntries.setSize(nOverlap, 0);
+    overlapStart_.transfer(start);
+    const label nOverlap = overlapStart_.size() - 1;
+    overlapEntries_.setSize(overlapStart_.last());
+    labelList filled(nOverlap, 0);
     forAll(cell_, e)
     {
         const label i = slot[cell_[e]];
         if (i >= 0)
         {
-            overlapEntries_[overlapStart_[i] + nEntries[i]++] = e;
+            overlapEntries_[overlapStart_[i] + filled[i]++] = e;
         }
     }
 
