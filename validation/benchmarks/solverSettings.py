@@ -53,12 +53,6 @@ SETTINGS = {
     "steadyLayerMean": PREVIOUS_SOLVES + REFERENCE + (
         ("SIMPLEC.layerMeanCorrection", "on", "fv"),),
 }
-# The lambda step of eq 2.41, alpha_lambda = F Delta^2/nu (thesis F = 1),
-# with the layer-mean correction: layerMeanAlphaF
-SETTINGS.update(
-    ("layerMeanAlpha%s" % F, SETTINGS["layerMean"]
-     + (("coupling.alphaLambdaFactor", F, "pp"),))
-    for F in ("0.25", "0.5", "2"))
 
 # The U under-relaxation as a part (layerMean+relaxU0.99): in SIMPLEC it is
 # a pseudo-time step of about alpha/(1 - alpha) cell diffusion times per
@@ -71,10 +65,15 @@ SETTINGS.update(
 SETTINGS.update(
     ("depth%d" % m, (("SIMPLEC.accelerationDepth", m, "fv"),))
     for m in (4, 12, 16, 24))
-# The lambda step factor as a part (reference+alphaF0.5)
+# The lambda step of eq 2.41, alpha_lambda = F Delta^2/nu (thesis F = 1),
+# as a part (reference+alphaF0.5) and with the layer-mean correction
+# (layerMeanAlphaF)
 SETTINGS.update(
     ("alphaF%s" % F, (("coupling.alphaLambdaFactor", F, "pp"),))
-    for F in ("0.25", "0.5"))
+    for F in ("0.25", "0.5", "2"))
+SETTINGS.update(
+    ("layerMeanAlpha%s" % F, SETTINGS["layerMean"] + SETTINGS["alphaF" + F])
+    for F in ("0.25", "0.5", "2"))
 # Consistent overlapping supports as a part (reference+consistent)
 SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 # GAMG for U as a part (layerMean+relaxU0.99+gamg)
