@@ -13,25 +13,6 @@ Description
 #include "particleVelocitySystem.H"
 #include "labelPairHashes.H"
 
-// * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
-
-namespace
-{
-
-// [r]_x, the matrix of v -> r x v
-Foam::tensor crossMatrix(const Foam::vector& r)
-{
-    return Foam::tensor
-    (
-        0, -r.z(), r.y(),
-        r.z(), 0, -r.x(),
-        -r.y(), r.x(), 0
-    );
-}
-
-} // namespace
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::fdm::couplingStencils::findOverlaps(const labelUList& count)
@@ -155,8 +136,9 @@ Foam::fdm::couplingStencils::overlapBlocks
                 const scalar w =
                     overlapJ_[i]*Jlambda_[e]*Jlambda_[f]*V[cell_[e]]
                    /alphaLambda;
-                const tensor Re(crossMatrix(offset_[e]));
-                const tensor Rf(crossMatrix(offset_[f]));
+                // [r]_x, the matrix of v -> r x v: OpenFOAM's Hodge dual
+                const tensor Re(*offset_[e]);
+                const tensor Rf(*offset_[f]);
                 overlapBlock& b = blocks[*found];
                 b.forceU += w*tensor::I;
                 b.forceOmega -= w*Rf;
