@@ -43,6 +43,9 @@ expectFatal unknownAcceleration system/fvSolution \
 expectFatal smallLayerMeanViscosity system/fvSolution \
     's/^ *nCorrectors .*$/&\n    layerMeanCorrection on; layerMeanViscosityRatio 0.5;/' \
     "layerMeanViscosityRatio 0.5" "finite numbers >= 1"
+expectFatal largeRhieChowFactor system/fvSolution \
+    's/^ *nCorrectors .*$/&\n    RhieChowFactor 1.5;/' \
+    "RhieChowFactor 1.5" "0 < RhieChowFactor <= 1"
 expectFatal misspeltSimplecKey system/fvSolution \
     's/nOuterCorrectors/nOuterCorrector/' "Unknown keyword 'nOuterCorrector'" \
     "nearest valid spelling: 'nOuterCorrectors'"

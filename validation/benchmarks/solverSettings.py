@@ -76,6 +76,11 @@ SETTINGS.update(
     for F in ("0.25", "0.5", "2"))
 # Consistent overlapping supports as a part (reference+consistent)
 SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
+# The Rhie-Chow coefficient of the converged face flux in units of 1/a_C as
+# a part (reference+relaxU0.99+RC0.9: the fixed point of relaxation 0.9)
+SETTINGS.update(
+    ("RC%s" % f, (("SIMPLEC.RhieChowFactor", f, "fv"),))
+    for f in ("0.9", "1"))
 # GAMG for U as a part (layerMean+relaxU0.99+gamg)
 SETTINGS["gamg"] = GAMG_U
 

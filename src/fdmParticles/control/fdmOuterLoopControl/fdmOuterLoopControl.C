@@ -21,7 +21,7 @@ void Foam::fdmOuterLoopControl::read()
             "nCorrectors", "nOuterCorrectors", "outerTolerance",
             "pRefCell", "pRefValue", "pRefPoint", "acceleration",
             "accelerationDepth", "layerMeanCorrection",
-            "layerMeanViscosityRatio"
+            "layerMeanViscosityRatio", "RhieChowFactor"
         },
         algorithmName_ + " block"
     );
@@ -55,6 +55,7 @@ void Foam::fdmOuterLoopControl::read()
     readAcceleration(d);
     readLayerMeanCorrection(d);
     checkURelaxation();
+    readRhieChowFactor(d);
 }
 
 
@@ -102,6 +103,22 @@ void Foam::fdmOuterLoopControl::readLayerMeanCorrection(const dictionary& d)
 }
 
 
+void Foam::fdmOuterLoopControl::readRhieChowFactor(const dictionary& d)
+{
+    RhieChowFactor_ = d.getOrDefault<scalar>("RhieChowFactor", 0);
+    const bool valid = RhieChowFactor_ > 0 && RhieChowFactor_ <= 1;
+    if (d.found("RhieChowFactor") && !valid)
+    {
+        FatalIOErrorInFunction(d)
+            << "RhieChowFactor " << RhieChowFactor_ << " in " << d.name()
+            << ": allowed values are 0 < RhieChowFactor <= 1 (1: the"
+            << " unrelaxed momentum diagonal; leave it out for the U"
+            << " relaxation factor, the thesis scheme)"
+            << exit(FatalIOError);
+    }
+}
+
+
 void Foam::fdmOuterLoopControl::checkURelaxation() const
 {
     const dictionary& solDict = mesh_.solutionDict();
@@ -137,6 +154,7 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
     accelerationDepth_(0),
     layerMeanCorrection_(false),
     layerMeanViscosityRatio_(16),
+    RhieChowFactor_(0),
     iteration_(0),
     changeU_(GREAT),
     residualU_(GREAT),
