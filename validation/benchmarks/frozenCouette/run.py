@@ -135,12 +135,34 @@ reference at 0.99 takes 664 outer iterations (1045 core-s) against 150
 (191).  And the converged solution moves with it, by 3.6e-3 gammaDot a1
 rms (7.9e-3 max) in the particle velocities and 2.2e-3 of Sigma_xy in the
 hydrodynamic Sigma_xy, and by 3.2e-3 with consistent overlaps (below),
-so it is not the overlaps.  Presumably the Rhie-Chow pressure term of
-the face flux, which SIMPLEC's fixed point carries times the relaxation
-factor and which is largest where the pressure balances lambda at the
-particle surfaces (not isolated further; a relaxation-independent face
-flux would remove it); the single sphere moves by at most 2e-4.  The
-Anderson depth (part depth<m>): 14, 12, 12, 12 outer
+so it is not the overlaps alone.  It is the Rhie-Chow pressure term of
+the face flux, whose coefficient at SIMPLEC's fixed point is the relaxed
+1/a_C, alpha_U/a_C: with SIMPLEC RhieChowFactor 0.9 (part RC0.9: the
+coefficient 0.9/a_C at any relaxation, RhieChowCorrection.H) the
+reference at 0.99 is 8.7e-4 gammaDot a1 rms from the one at 0.9 with the
+thesis overlaps and 2.1e-9 with consistent overlaps (784 outer
+iterations against 151), so that with both the converged solution
+depends on no solver setting.  The rest with the thesis overlaps is their
+velocity correction, which does not vanish at the fixed point and which
+the relaxed sweep must undo.  It is no lever either: the layer-mean step
+at 0.99 with RC0.9 takes 16 outer iterations (1.5e-3 gammaDot a1 rms from
+the 0.9 reference) against 12, and the coefficient 1/a_C (RC1, relaxation
+0.9) moves the solution by 3.2e-3.  Nor is an implicit rigid-body
+penalty now that it cannot move the fixed point (K (U - U_prev) on the
+support cells, K = F nu/Delta^2, its force moved into lambda after each
+sweep; RC0.9, thesis overlaps; tried, then removed): 11, 13 outer
+iterations at F = 1, 10 (1.34e-3, 1.89e-3 gammaDot a1 rms) against 12
+(1.27e-3), diverged at 100; left in U (not moved) at F = 10 it stopped in
+17 iterations 1.2e-2 from the reference.  Nor a larger lambda step
+(consistent overlaps, alphaLambdaFactor 2): 12 outer iterations at the
+lambda residual 1e-3 (1.9e-3 gammaDot a1 rms) and 18 at 5e-4 (1.05e-3)
+against 12 (1.16e-3) at factor 1.  The velocity error of the default
+step is at the particle scale: of its energy in the fluid, 50 % is in
+the means over blocks of a1 (5^3 cells), 32 % over 2 a1, 11 % over 5 a1
+and 8 % in the layer means; the particles' errors are relative motions
+(1.12e-3 of 1.16e-3 gammaDot a1 rms with the common translation
+removed), so a coarse correction above the particle scale cannot remove
+much of it.  The Anderson depth (part depth<m>): 14, 12, 12, 12 outer
 iterations at m = 4, 8, 16, 24, the same errors.
 
 Consistent overlaps (part consistent: particleProperties coupling
