@@ -3,14 +3,18 @@ couetteTimeStep): the dictionary entries each changes from a case's own.
 
 A setting is NAME, NAME+PART+... (their entries in order) or any of these
 followed by @TOL (the lambda residual per step, coupling lambdaTolerance).
+A part Delta<D> meshes the case again at Delta = D a1 with the sub-grid
+tables calibrated there (apply_mesh).
 """
 
 import os
+import re
+import shutil
 import sys
 
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
-from fdmPost.caseRunner import foam_set  # noqa: E402
+from fdmPost.caseRunner import foam_get, foam_set, run_logged  # noqa: E402
 
 FILES = {"fv": "system/fvSolution", "pp": "constant/particleProperties"}
 # The inner solves of the Couette tutorial until issue 30 (a snapshot
@@ -83,6 +87,69 @@ SETTINGS.update(
     for f in ("0.9", "1"))
 # GAMG for U as a part (layerMean+relaxU0.99+gamg)
 SETTINGS["gamg"] = GAMG_U
+
+
+# Mesh spacings as parts (NAME+Delta0.25): the case is meshed again at
+# Delta = D a1, its start time's fields mapped from the old mesh and the
+# sub-grid tables calibrated at D named (data/resistance/*_DeltaD, made
+# with subGridCalibration --delta D).  apply_mesh does it; apply_setting
+# leaves these parts alone.
+MESH_PARTS = {"Delta0.25": 0.25}
+# A field's nonuniform list (one level of parentheses inside)
+NONUNIFORM = r"nonuniform List<(\w+)>\s*\d+\s*\((?:[^()]|\([^()]*\))*\)"
+SETTINGS.update((name, ()) for name in MESH_PARTS)
+
+
+def apply_mesh(case, setting, time):
+    """Mesh the case again for the setting's spacing, if it names one."""
+    for part in setting.partition("@")[0].split("+"):
+        if part in MESH_PARTS:
+            remesh(case, time, MESH_PARTS[part])
+
+
+def remesh(case, time, delta):
+    """blockMesh at spacing delta (the box kept), the fields U, p, lambda
+    of `time` mapped from the old mesh (mapFields -consistent), and the
+    sub-grid tables of that spacing."""
+    old = case + ".previousMesh"
+    shutil.rmtree(old, ignore_errors=True)
+    shutil.copytree(case, old)
+    mesh_dict = os.path.join(case, "system", "blockMeshDict")
+    text = open(mesh_dict).read()
+    for axis in "xyz":
+        length = float(re.search(r"^L%s\s+([^;]+);" % axis, text,
+                                 re.M).group(1))
+        text = re.sub(r"^n%s\s+[^;]+;" % axis,
+                      "n%s      %d;" % (axis, round(length / delta)), text,
+                      flags=re.M)
+    open(mesh_dict, "w").write(text)
+    shutil.rmtree(os.path.join(case, "constant", "polyMesh"))
+    run_logged(["blockMesh"], case, "log.blockMesh")
+    fields = os.path.join(case, time)
+    for name in ("phi", "lagrangian"):
+        path = os.path.join(fields, name)
+        if os.path.isdir(path):
+            shutil.rmtree(path)
+        elif os.path.exists(path):
+            os.remove(path)
+    for name in ("U", "p", "lambda"):
+        path = os.path.join(fields, name)
+        # The old values as uniform zeros of the same type: templates that
+        # mapFields fills
+        text = re.sub(NONUNIFORM, lambda m: "uniform " + (
+            "0" if m.group(1) == "scalar" else "(0 0 0)"),
+            open(path).read(), flags=re.S)
+        open(path, "w").write(text)
+    run_logged(["mapFields", old, "-consistent", "-sourceTime", time],
+               case, "log.mapFields")
+    shutil.rmtree(old)
+    pp = "constant/particleProperties"
+    tables = re.findall(r'"([^"]+)"', foam_get(case, "subGrid.pairTables", pp))
+    suffix = "_Delta%g" % delta
+    foam_set(case, "subGrid.pairTables",
+             "(%s)" % " ".join('"%s%s"' % (t, suffix) for t in tables), pp)
+    foam_set(case, "subGrid.wallTable",
+             '"$FDM_PROJECT_DIR/data/resistance/subGridWall%s"' % suffix, pp)
 
 
 def check_setting(setting):

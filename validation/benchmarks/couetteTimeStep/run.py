@@ -24,7 +24,10 @@ when each run has a core to itself: --jobs no more than the cores).
 
 A run DT:SETTING uses a named solver setting (validation/benchmarks/
 solverSettings.py, as frozenCouette: NAME[+PART...][@TOL]) instead of
-layerMean; the first run of the list, by step, is the comparison.
+layerMean; the first run of the list, by step, is the comparison.  With
+the part Delta0.25 the run starts from the snapshot meshed again at
+Delta = a1/4 (the same particles, fields mapped, the a1/4 sub-grid
+tables), so that the comparison shows what the resolution changes.
 
 Writes report_windowW.md and timeStep_windowW.png here (cases in
 build/benchmarks/couetteTimeStep).
@@ -49,8 +52,8 @@ from fdmPost.caseRunner import (foam_set, in_case, snapshot_case,  # noqa
 from fdmPost.rheology import (channel_case, core_rheology,  # noqa
                               mechanical_consistency)
 sys.path.insert(0, os.path.dirname(HERE))
-from solverSettings import (apply_setting, case_suffix,  # noqa: E402
-                            check_setting)
+from solverSettings import (apply_mesh, apply_setting,  # noqa: E402
+                            case_suffix, check_setting)
 
 # The snapshot's outer iteration with the layer-mean correction (the
 # snapshot may predate it)
@@ -119,6 +122,7 @@ def prepare(snapshot, time, item, window, work):
     foam_set(case, "functions", "{}", cd)
     # Positions every step (particles.h5), the end included
     foam_set(case, "output.timeSeriesInterval", 1, pp)
+    apply_mesh(case, setting or DEFAULT_SETTING, time)
     apply_setting(case, setting or DEFAULT_SETTING)
     return case, end, True
 

@@ -44,6 +44,9 @@ lambda residual per step):
   relax0.97  the default with U relaxed by 0.97 instead of 0.9
   reference  Anderson to lambda residual 1e-9, linear solvers to 1e-12
              absolute (relTol 0), at most 3000 outer iterations
+  Delta0.25  (a part) the snapshot meshed again at Delta = a1/4, its
+             fields mapped, the sub-grid tables of a1/4; its errors
+             against the a1/5 reference include the change of resolution
 
 With --steps N every setting runs N steps from the snapshot and the last
 is measured, against a reference solve of that step from the setting's own
@@ -208,8 +211,8 @@ from fdmPost.caseRunner import (foam_get, foam_set, run_logged,  # noqa
 from fdmPost.particleCase import momentum_balance, read_list  # noqa
 from fdmPost.rheology import number  # noqa: E402
 sys.path.insert(0, os.path.dirname(HERE))
-from solverSettings import (apply_setting, case_suffix,  # noqa: E402
-                            check_setting)
+from solverSettings import (apply_mesh, apply_setting,  # noqa: E402
+                            case_suffix, check_setting)
 
 STATE_KEYS = (("radius", 1), ("velocity", 3), ("angularVelocity", 3),
               ("stresslet", 6), ("contactStresslet", 6))
@@ -234,6 +237,7 @@ def setting_case(snapshot, time, setting, work, steps=1):
     foam_set(case, "writeControl", "timeStep", "system/controlDict")
     foam_set(case, "writeInterval", 1, "system/controlDict")
     foam_set(case, "functions", "{}", "system/controlDict")
+    apply_mesh(case, setting, time)
     apply_setting(case, setting)
     return case, end
 
