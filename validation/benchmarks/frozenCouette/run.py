@@ -168,6 +168,23 @@ removed), so a coarse correction above the particle scale cannot remove
 much of it.  The Anderson depth (part depth<m>): 14, 12, 12, 12 outer
 iterations at m = 4, 8, 16, 24, the same errors.
 
+The mesh spacing (part Delta0.25, Delta = a1/4 with the sub-grid tables
+calibrated there; strain 1): the a1/4 reference is 3.0e-2 gammaDot a1
+rms (6.5e-2 max) from the a1/5 one in the particle velocities, 3.2e-2
+gammaDot in Omega, 3.0e-3, 2.1e-3, 2.2e-3 of Sigma_xy in the hydrodynamic
+Sigma_xy, N1, N2 (the contact parts 1.4e-4 to 3.3e-4): the resolution
+moves the solution 25 times more than the default step's solver error.
+The a1/4 reference costs 91 core-s and 129 outer iterations against 175
+and 147.  With --steps 6, each against its own mesh's reference: the
+a1/5 default 4.31 core-s, 12 outer iterations, U 1.2e-3 rms (relative
+motion 1.1e-3), Omega 7.3e-4, hydrodynamic Sigma_xy, N1, N2 1.4e-4,
+7.1e-5, 1.1e-4; a1/4 at the same lambda residual 2.05 core-s, 11
+iterations, 1.7e-3 (1.3e-3), 7.2e-4, 1.3e-4, 6.8e-6, 1.6e-4; a1/4 at
+6.4e-4 (the residual scales with alpha_lambda = Delta^2/nu) 2.46 core-s,
+14 iterations, 1.6e-3 (8.0e-4), 4.7e-4, 7.8e-5, 3.8e-5, 5.2e-5: every
+error but the common translation at or below the a1/5 default's, at
+1.75 times less cost.
+
 Consistent overlaps (part consistent: particleProperties coupling
 overlaps consistent).  In the thesis form the fixed point keeps, in each
 particle's equation, (1/alpha_lambda) int J_u (U + Omega x r - u) over the
