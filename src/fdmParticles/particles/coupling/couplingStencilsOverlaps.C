@@ -124,6 +124,8 @@ Foam::fdm::couplingStencils::overlapBlocks
         for (label k = overlapStart_[i]; k < overlapStart_[i + 1]; ++k)
         {
             const label e = overlapEntries_[k];
+            // [r]_x, the matrix of v -> r x v: OpenFOAM's Hodge dual
+            const tensor Re(*offset_[e]);
             for (label m = overlapStart_[i]; m < overlapStart_[i + 1]; ++m)
             {
                 const label f = overlapEntries_[m];
@@ -136,8 +138,6 @@ Foam::fdm::couplingStencils::overlapBlocks
                 const scalar w =
                     overlapJ_[i]*Jlambda_[e]*Jlambda_[f]*V[cell_[e]]
                    /alphaLambda;
-                // [r]_x, the matrix of v -> r x v: OpenFOAM's Hodge dual
-                const tensor Re(*offset_[e]);
                 const tensor Rf(*offset_[f]);
                 overlapBlock& b = blocks[*found];
                 b.forceU += w*tensor::I;
