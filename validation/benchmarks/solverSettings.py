@@ -91,10 +91,10 @@ SETTINGS["gamg"] = GAMG_U
 
 # Mesh spacings as parts (NAME+Delta0.25): the case is meshed again at
 # Delta = D a1, its start time's fields mapped from the old mesh and the
-# sub-grid tables calibrated at D named (data/resistance/*_DeltaD, made
+# sub-grid tables calibrated at D named (data/resistance/*_<part>, made
 # with subGridCalibration --delta D).  apply_mesh does it; apply_setting
 # leaves these parts alone.
-MESH_PARTS = {"Delta0.25": 0.25}
+MESH_PARTS = {"Delta0.25": 0.25, "Delta0.1667": 1/6}
 # A field's nonuniform list (one level of parentheses inside)
 NONUNIFORM = r"nonuniform List<(\w+)>\s*\d+\s*\((?:[^()]|\([^()]*\))*\)"
 SETTINGS.update((name, ()) for name in MESH_PARTS)
@@ -104,13 +104,13 @@ def apply_mesh(case, setting, time):
     """Mesh the case again for the setting's spacing, if it names one."""
     for part in setting.partition("@")[0].split("+"):
         if part in MESH_PARTS:
-            remesh(case, time, MESH_PARTS[part])
+            remesh(case, time, MESH_PARTS[part], "_" + part)
 
 
-def remesh(case, time, delta):
+def remesh(case, time, delta, suffix):
     """blockMesh at spacing delta (the box kept), the fields U, p, lambda
     of `time` mapped from the old mesh (mapFields -consistent), and the
-    sub-grid tables of that spacing."""
+    sub-grid tables of that spacing (their names end in suffix)."""
     old = case + ".previousMesh"
     shutil.rmtree(old, ignore_errors=True)
     shutil.copytree(case, old)
@@ -145,7 +145,6 @@ def remesh(case, time, delta):
     shutil.rmtree(old)
     pp = "constant/particleProperties"
     tables = re.findall(r'"([^"]+)"', foam_get(case, "subGrid.pairTables", pp))
-    suffix = "_Delta%g" % delta
     foam_set(case, "subGrid.pairTables",
              "(%s)" % " ".join('"%s%s"' % (t, suffix) for t in tables), pp)
     foam_set(case, "subGrid.wallTable",
