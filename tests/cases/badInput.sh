@@ -76,6 +76,9 @@ expectFatal unknownGroupKeyword $pp 's/force (0 0 18.85);/forse (0 0 1);/' \
     "allowed keywords"
 expectFatal missingLambdaTolerance $pp 's/lambdaTolerance .*;//' \
     "'lambdaTolerance'"
+expectFatal tightBetweenRecords $pp \
+    's/^ *lambdaTolerance .*;/&\n    lambdaToleranceBetweenRecords 1e-7;/' \
+    "lambdaToleranceBetweenRecords 1e-07" "at least lambdaTolerance"
 expectFatal missingFluidDensity constant/transportProperties 's/^rho .*$//' \
     "'rho'"
 expectFatal unknownSubGridModel $pp '$a subGrid { model fancy; }' \

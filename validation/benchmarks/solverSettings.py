@@ -78,6 +78,14 @@ SETTINGS.update(
 SETTINGS.update(
     ("layerMeanAlpha%s" % F, SETTINGS["layerMean"] + SETTINGS["alphaF" + F])
     for F in ("0.25", "0.5", "2"))
+# A looser lambda residual on the steps that write nothing, records every
+# 5th step as in the tutorial (layerMean+betweenRecords1e-2; coupling
+# lambdaToleranceBetweenRecords)
+SETTINGS.update(
+    ("betweenRecords%s" % t, (
+        ("coupling.lambdaToleranceBetweenRecords", t, "pp"),
+        ("output.timeSeriesInterval", 5, "pp")))
+    for t in ("3e-3", "6.4e-3", "1e-2"))
 # Consistent overlapping supports as a part (reference+consistent)
 SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 # The Rhie-Chow coefficient of the converged face flux in units of 1/a_C as

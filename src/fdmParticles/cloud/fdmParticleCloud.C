@@ -230,8 +230,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     delta_(0),
     indicator_(5, 0.3, 1),
     alphaLambda_(0),
-    lambdaTolerance_(0),
-    lambdaToleranceFirstStep_(0),
+    lambdaTolerances_{0, 0, 0},
     solveTolerance_(1e-6),
     consistentOverlaps_(false),
     box_(point::zero, point::one, FixedList<bool, 3>(false)),
@@ -352,7 +351,15 @@ Foam::scalar Foam::fdmParticleCloud::smallestGapReach() const
 
 Foam::scalar Foam::fdmParticleCloud::lambdaTolerance() const
 {
-    return firstSolveDone_ ? lambdaTolerance_ : lambdaToleranceFirstStep_;
+    return lambdaTolerances_.of(firstSolveDone_, output_->recordDue());
+}
+
+
+bool Foam::fdmParticleCloud::looseSolve() const
+{
+    return
+        !empty()
+     && lambdaTolerances_.loose(firstSolveDone_, output_->recordDue());
 }
 
 

@@ -52,6 +52,7 @@ void Foam::fdmParticleCloud::readCoupling()
         c,
         {
             "lambdaTolerance", "lambdaToleranceFirstStep",
+            "lambdaToleranceBetweenRecords",
             "particleSolveTolerance", "alphaLambdaFactor", "overlaps"
         },
         "coupling block"
@@ -61,14 +62,24 @@ void Foam::fdmParticleCloud::readCoupling()
     fdm::checkChoice(c, "overlaps", overlaps, {"thesis", "consistent"});
     consistentOverlaps_ = (overlaps == "consistent");
 
-    lambdaTolerance_ = c.get<scalar>("lambdaTolerance");
-    requirePositive(c, "lambdaTolerance", lambdaTolerance_, true);
-    lambdaToleranceFirstStep_ =
-        c.getOrDefault<scalar>("lambdaToleranceFirstStep", lambdaTolerance_);
-    requirePositive
-    (
-        c, "lambdaToleranceFirstStep", lambdaToleranceFirstStep_, true
-    );
+    fdm::lambdaTolerances& t = lambdaTolerances_;
+    t.recorded = c.get<scalar>("lambdaTolerance");
+    requirePositive(c, "lambdaTolerance", t.recorded, true);
+    t.firstSolve =
+        c.getOrDefault<scalar>("lambdaToleranceFirstStep", t.recorded);
+    requirePositive(c, "lambdaToleranceFirstStep", t.firstSolve, true);
+    t.betweenRecords =
+        c.getOrDefault<scalar>("lambdaToleranceBetweenRecords", t.recorded);
+    if (!(t.betweenRecords >= t.recorded))
+    {
+        FatalIOErrorInFunction(c)
+            << "coupling.lambdaToleranceBetweenRecords " << t.betweenRecords
+            << " in " << c.name() << " is below lambdaTolerance "
+            << t.recorded << nl
+            << "    allowed: at least lambdaTolerance (the steps that write"
+            << " nothing are solved as tightly as the others or less)"
+            << exit(FatalIOError);
+    }
     solveTolerance_ = c.get<scalar>("particleSolveTolerance");
     requirePositive(c, "particleSolveTolerance", solveTolerance_);
 

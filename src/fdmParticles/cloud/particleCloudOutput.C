@@ -84,6 +84,20 @@ bool Foam::particleCloudOutput::timeSeriesDue() const
 }
 
 
+bool Foam::particleCloudOutput::recordDue() const
+{
+    // The same on every rank (vtkDue is not: only the master writes VTK)
+    const Time& runTime = mesh_.time();
+    return
+        timeSeriesDue()
+     || runTime.writeTime()
+     || fdm::particleVTKWriter::due
+        (
+            vtkInterval_, runTime.timeIndex(), runTime.writeTime()
+        );
+}
+
+
 void Foam::particleCloudOutput::writeTimeSeries
 (
     const particles& p,

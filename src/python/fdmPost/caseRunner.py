@@ -66,11 +66,21 @@ def run_case(case, keep_mesh=False):
                                  stderr=subprocess.STDOUT)
         if rc != 0:
             raise RuntimeError("%s failed in %s (see %s)" % (app, case, log))
+    if not solved(case):
+        raise RuntimeError("no converged solve in %s" % log)
     state = read_last_record(case)
     if not keep_mesh:
         # The mesh is the bulk of a case: the measurement is in the h5 file
         shutil.rmtree(os.path.join(case, "constant", "polyMesh"))
     return state
+
+
+def solved(case):
+    """Whether the solver's log in case reports a converged solve: a record
+    without one (a solver that skipped it, as one run against a library
+    being rebuilt did) is no measurement."""
+    log = os.path.join(case, "log.fdmSuspensionFoam")
+    return os.path.isfile(log) and ": converged in " in open(log).read()
 
 
 def read_last_record(case):
