@@ -224,13 +224,16 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.environ["FDM_PROJECT_DIR"]
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (foam_get, foam_set, run_logged,  # noqa
-                                snapshot_case, timing_lines, work_lock)
+                                snapshot_case, solved, timing_lines,
+                                work_lock)
 from fdmPost.particleCase import momentum_balance, read_list  # noqa
 from fdmPost.rheology import number  # noqa: E402
 sys.path.insert(0, os.path.dirname(HERE))
 from solverSettings import (apply_mesh, apply_setting,  # noqa: E402
                             case_suffix, check_setting)
 
+# Settings that stop the steps between records at a looser residual
+BETWEEN_RECORDS = "betweenRecords"
 STATE_KEYS = (("radius", 1), ("velocity", 3), ("angularVelocity", 3),
               ("stresslet", 6), ("contactStresslet", 6))
 
@@ -256,6 +259,12 @@ def setting_case(snapshot, time, setting, work, steps=1):
     foam_set(case, "functions", "{}", "system/controlDict")
     apply_mesh(case, setting, time)
     apply_setting(case, setting)
+    if BETWEEN_RECORDS in setting:
+        # Only the measured step is written (and recorded): the steps
+        # before it stop at the looser residual, as between records in a run
+        foam_set(case, "writeInterval", steps, "system/controlDict")
+        foam_set(case, "output.timeSeriesInterval", 10 ** 6,
+                 "constant/particleProperties")
     return case, end
 
 
@@ -269,6 +278,51 @@ def reference_from(case, time, work):
         for d in ("constant", "system", time):
             shutil.copytree(os.path.join(case, d), os.path.join(source, d))
     return setting_case(source, time, "reference", work)
+
+
+def reference_in_place(case, end, work):
+    """The reference solve of the configuration a case reached at `end`:
+    its state there marked unsolved, so that the solver solves at those
+    positions (contact history and time step as in the step) without
+    moving.  Its loads are read from the lagrangian cloud written at the
+    start time."""
+    ref = os.path.join(work, "inPlace_%s" % os.path.basename(case))
+    if not solved(ref):
+        shutil.rmtree(ref, ignore_errors=True)
+        for d in ("constant", "system", end):
+            shutil.copytree(os.path.join(case, d), os.path.join(ref, d))
+        path = os.path.join(ref, end, "particleState")
+        text, n = re.subn(r"^solved\s+\S+;", "solved 0;",
+                          open(path).read(), flags=re.M)
+        assert n == 1, path
+        open(path, "w").write(text)
+        foam_set(ref, "endTime", end, "system/controlDict")
+        apply_setting(ref, "reference")
+        foam_set(ref, "coupling.lambdaToleranceFirstStep", 1e-9,
+                 "constant/particleProperties")
+        run_logged(["fdmSuspensionFoam"], ref, "log.fdmSuspensionFoam")
+    text = open(os.path.join(ref, "log.fdmSuspensionFoam")).read()
+    cloud = os.path.join(ref, end, "lagrangian", "particles")
+    order = np.argsort(lagrangian_field(cloud, "id", 1)[:, 0])
+    state = {key: lagrangian_field(cloud, name, width)[order].ravel()
+             for key, name, width in (
+                 ("velocity", "U", 3), ("angularVelocity", "omega", 3),
+                 ("stresslet", "stresslet", 6),
+                 ("contactStresslet", "contactStresslet", 6))}
+    state["radius"] = lagrangian_field(cloud, "d", 1)[order, 0] / 2
+    return {"state": state, "wallBalance": wall_balance(ref, end),
+            "residual": float(re.findall(r"lambda residual (\S+),",
+                                         text)[-1])}
+
+
+def lagrangian_field(cloud, name, width):
+    """A field of an ascii lagrangian cloud as an n x width array."""
+    body = open(os.path.join(cloud, name)).read().split("FoamFile", 1)[1]
+    body = body.split("}", 1)[1]
+    numbers = re.findall(r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?",
+                         body)
+    n = int(numbers[0])
+    return np.array(numbers[1:1 + n * width], float).reshape(n, width)
 
 
 def read_state(case, time):
@@ -415,7 +469,9 @@ def main():
                     # from the setting's own state one step before
                     dt = float(foam_get(snap, "deltaT", "system/controlDict"))
                     before = "%.12g" % (float(end) - dt)
-                    ref = solve(*reference_from(case, before, work))
+                    ref = (reference_in_place(case, end, work)
+                           if BETWEEN_RECORDS in setting else
+                           solve(*reference_from(case, before, work)))
                 row = errors(run, ref, rate, volume)
                 row.update(wallBalance=run["wallBalance"],
                            wallBalanceReference=ref["wallBalance"])
