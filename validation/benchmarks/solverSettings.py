@@ -17,16 +17,20 @@ sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
 from fdmPost.caseRunner import foam_get, foam_set, run_logged  # noqa: E402
 
 FILES = {"fv": "system/fvSolution", "pp": "constant/particleProperties"}
-# The inner solves of the Couette tutorial until issue 30 (a snapshot
-# cloned from the tutorial since has looser ones)
+# The inner solves and the lambda residual of every step of the Couette
+# tutorial until issue 30 (a snapshot cloned from the tutorial since has
+# looser steps between records)
 PREVIOUS_SOLVES = (("SIMPLEC.nCorrectors", 2, "fv"),
                    ("solvers.p.relTol", 0.05, "fv"),
-                   ("solvers.U.relTol", 0.1, "fv"))
+                   ("solvers.U.relTol", 0.1, "fv"),
+                   ("coupling.lambdaTolerance", 1e-3, "pp"),
+                   ("coupling.lambdaToleranceBetweenRecords", 1e-3, "pp"))
 # The tutorial's settings before issue 30: the layer means left to the
 # outer iteration
 PREVIOUS = (("SIMPLEC.layerMeanCorrection", "off", "fv"),) + PREVIOUS_SOLVES
 REFERENCE = (("SIMPLEC.nOuterCorrectors", 3000, "fv"),
              ("coupling.lambdaTolerance", 1e-9, "pp"),
+             ("coupling.lambdaToleranceBetweenRecords", 1e-9, "pp"),
              ("coupling.particleSolveTolerance", 1e-14, "pp"),
              ("solvers.p.tolerance", 1e-12, "fv"),
              ("solvers.p.relTol", 0, "fv"),
@@ -41,7 +45,9 @@ SETTINGS = {
                           ("SIMPLEC.nOuterCorrectors", 3000, "fv")),
     "thesis10": PREVIOUS + (("SIMPLEC.acceleration", "none", "fv"),
                             ("SIMPLEC.nOuterCorrectors", 10, "fv"),
-                            ("coupling.lambdaTolerance", 0, "pp")),
+                            ("coupling.lambdaTolerance", 0, "pp"),
+                            ("coupling.lambdaToleranceBetweenRecords", 0,
+                             "pp")),
     "layerMean": PREVIOUS_SOLVES + (
         ("SIMPLEC.layerMeanCorrection", "on", "fv"),
         ("SIMPLEC.layerMeanViscosityRatio", 16, "fv")),

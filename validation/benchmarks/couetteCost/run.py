@@ -76,7 +76,9 @@ def base_case(work):
     foam_set(case, "endTime", DT, "system/controlDict")
     foam_set(case, "writeInterval", 1, "system/controlDict")
     foam_set(case, "startFrom", "latestTime", "system/controlDict")
-    for key in ("lambdaTolerance", "lambdaToleranceFirstStep"):
+    # Every step to TOL (the tutorial's steps between records are looser)
+    for key in ("lambdaTolerance", "lambdaToleranceFirstStep",
+                "lambdaToleranceBetweenRecords"):
         foam_set(case, "coupling." + key, TOL, "constant/particleProperties")
     run_logged(["fdmPackParticles", "--box", str(L), str(L), str(L),
                 "--walls", "y", "--phi", str(PHI0), "--seed", "1", "-o",
@@ -107,8 +109,9 @@ def policy_case(work, base, name, dt, steps):
              "{ solver %s; tolerance 1e-7; relTol 0.05; }" % solver, fv)
     if name == "thesis10":
         foam_set(case, "SIMPLEC.nOuterCorrectors", 10, fv)
-        foam_set(case, "coupling.lambdaTolerance", 0,
-                 "constant/particleProperties")
+        for key in ("lambdaTolerance", "lambdaToleranceBetweenRecords"):
+            foam_set(case, "coupling." + key, 0,
+                     "constant/particleProperties")
     return case
 
 
