@@ -484,15 +484,16 @@ def main():
                 print("  %-16s %6.1f core-s %4d outer, |dU| rms %.1e max "
                       "%.1e" % (setting, run["coreSeconds"], run["outer"],
                                 *row["velocity"]), flush=True)
-    write_report(rows)
+    write_report(rows, args.reference)
 
 
-def write_report(rows):
+def write_report(rows, reference):
     lines = [
         "# Frozen-configuration benchmark: one step of a sheared Couette "
         "suspension",
         "",
-        "Errors against the reference solve of the same step (see run.py): "
+        "Errors against the reference solve of the same step (see run.py; "
+        "setting %s for one step): " % reference +
         "velocities in gammaDot a1 (also with the mean over the particles "
         "removed), angular velocities in gammaDot, stress parts relative to "
         "the reference |Sigma_xy|; the wall balance |F^w + F^FDM,parts| "
