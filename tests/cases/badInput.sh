@@ -78,7 +78,7 @@ expectFatal missingLambdaTolerance $pp 's/lambdaTolerance .*;//' \
     "'lambdaTolerance'"
 expectFatal tightBetweenRecords $pp \
     's/^ *lambdaTolerance .*;/&\n    lambdaToleranceBetweenRecords 1e-7;/' \
-    "lambdaToleranceBetweenRecords 1e-07" "at least lambdaTolerance"
+    "coupling.lambdaToleranceBetweenRecords" "at least lambdaTolerance"
 expectFatal missingFluidDensity constant/transportProperties 's/^rho .*$//' \
     "'rho'"
 expectFatal unknownSubGridModel $pp '$a subGrid { model fancy; }' \

@@ -1,7 +1,7 @@
 #!/bin/bash
 # Case test: every shipped sub-grid table is what subGridCalibration's table
 # step makes from the measurement kept beside it (data/resistance/measured),
-# at every mesh spacing (Delta = a1/5 and a1/4): the tables are reproducible
+# at every mesh spacing (Delta = a1/5, a1/4 and a1/6): the tables are reproducible
 # from the repository alone, and a change of the tool or of a table that
 # breaks that is caught.  Compared line by line except the FoamFile header
 # (which names the file).
@@ -35,5 +35,8 @@ subGridWall wall wallL10.dat wallTheory
 subGridPair_lambda1_Delta0.25 pair pairL10_Delta0.25.dat twoSphereTheory_lambda1
 subGridPair_lambda1.4_Delta0.25 pair pair14L10_Delta0.25.dat twoSphereTheory_lambda1.4
 subGridWall_Delta0.25 wall wallL10_Delta0.25.dat wallTheory
+subGridPair_lambda1_Delta0.1667 pair pairL8_Delta0.1667.dat twoSphereTheory_lambda1
+subGridPair_lambda1.4_Delta0.1667 pair pair14L8_Delta0.1667.dat twoSphereTheory_lambda1.4
+subGridWall_Delta0.1667 wall wallL8_Delta0.1667.dat wallTheory
 TABLES
 [ "$failures" -eq 0 ]
