@@ -78,7 +78,8 @@ expectFatal missingLambdaTolerance $pp 's/lambdaTolerance .*;//' \
     "'lambdaTolerance'"
 expectFatal tightBetweenRecords $pp \
     's/^ *lambdaTolerance .*;/&\n    lambdaToleranceBetweenRecords 1e-7;/' \
-    "coupling.lambdaToleranceBetweenRecords" "at least lambdaTolerance"
+    "allowed values are lambdaToleranceBetweenRecords >=" \
+    "at least lambdaTolerance"
 expectFatal missingFluidDensity constant/transportProperties 's/^rho .*$//' \
     "'rho'"
 expectFatal unknownSubGridModel $pp '$a subGrid { model fancy; }' \

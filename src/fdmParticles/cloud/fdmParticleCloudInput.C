@@ -13,6 +13,7 @@ Description
 #include "particleList.H"
 #include "particleStateFile.H"
 #include "checkKeywords.H"
+#include "readBounded.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -68,18 +69,12 @@ void Foam::fdmParticleCloud::readCoupling()
     t.firstSolve =
         c.getOrDefault<scalar>("lambdaToleranceFirstStep", t.recorded);
     requirePositive(c, "lambdaToleranceFirstStep", t.firstSolve, true);
-    t.betweenRecords =
-        c.getOrDefault<scalar>("lambdaToleranceBetweenRecords", t.recorded);
-    if (!(t.betweenRecords >= t.recorded))
-    {
-        FatalIOErrorInFunction(c)
-            << "coupling.lambdaToleranceBetweenRecords " << t.betweenRecords
-            << " in " << c.name() << " is below lambdaTolerance "
-            << t.recorded << nl
-            << "    allowed: at least lambdaTolerance (the steps that write"
-            << " nothing are solved as tightly as the others or less)"
-            << exit(FatalIOError);
-    }
+    t.betweenRecords = fdm::readBoundedOrDefault
+    (
+        c, "lambdaToleranceBetweenRecords", t.recorded, t.recorded, GREAT,
+        "at least lambdaTolerance: the steps that write nothing are solved"
+        " as tightly as the others or less"
+    );
     solveTolerance_ = c.get<scalar>("particleSolveTolerance");
     requirePositive(c, "particleSolveTolerance", solveTolerance_);
 
