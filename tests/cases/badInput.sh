@@ -35,6 +35,12 @@ expectFatal missingCorrectors system/fvSolution \
     's/nCorrectors .*$//' nCorrectors
 expectFatal negativeCorrectors system/fvSolution \
     's/nCorrectors .*$/nCorrectors -1;/' nCorrectors ">= 1"
+expectFatal negativeCorrectorsBetweenRecords system/fvSolution \
+    's/^ *nCorrectors .*$/&\n    nCorrectorsBetweenRecords 0;/' \
+    "nCorrectorsBetweenRecords 0" ">= 1"
+expectFatal misspeltBetweenRecordsSolver system/fvSolution \
+    's/^    U$/    UBetweenRecord { solver PCG; preconditioner DIC; tolerance 1e-8; relTol 0; }\n&/' \
+    "Unknown solver UBetweenRecord" "did you mean UBetweenRecords"
 expectFatal missingRelaxation system/fvSolution \
     's/U               0.9;//' relaxationFactors "0 < U < 1"
 expectFatal unknownAcceleration system/fvSolution \

@@ -24,6 +24,21 @@ def steps(case):
         r"^Step (\d+) .*? outer (\d+)\s+lambdaResidual (\S+)", text, re.M)}
 
 
+def solvers(case):
+    """{step: (U solvers, p solvers, p solves per outer iteration)} from the
+    linear-solver lines of each step (between its Time = line and its
+    summary line)."""
+    text = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
+    out = {}
+    for block in re.findall(r"^Time = .*?^Step .*?$", text, re.M | re.S):
+        step = int(re.search(r"^Step (\d+)", block, re.M).group(1))
+        u = set(re.findall(r"^(\w+): +Solving for Ux", block, re.M))
+        p = re.findall(r"^(\w+): +Solving for p,", block, re.M)
+        outer = int(re.search(r" outer (\d+) ", block).group(1))
+        out[step] = (u, set(p), len(p) / outer)
+    return out
+
+
 def main(work):
     tight, loose = steps(os.path.join(work, "tight")), steps(
         os.path.join(work, "loose"))
@@ -39,6 +54,15 @@ def main(work):
                        " %d outer iterations < %d (tight run)"
                        % (k, RECORDED, r, LOOSE, n, tight[k][0]),
                        RECORDED <= r < LOOSE and n < tight[k][0]))
+    used = solvers(os.path.join(work, "loose"))
+    for k in range(1, STEPS + 1):
+        expected = ({"smoothSolver"}, {"GAMG"}, 1) if k in between \
+            else ({"DICPCG"}, {"DICPCG"}, 2)
+        checks.append(("step %d: U by %s, p by %s, %g p solves per outer"
+                       " iteration (expected %s, %s, %d)"
+                       % ((k,) + tuple(map(sorted, used[k][:2]))
+                          + used[k][2:] + tuple(map(sorted, expected[:2]))
+                          + expected[2:]), used[k] == expected))
     times = np.round(momentum_balance(os.path.join(work, "loose"))["time"]
                      / DT).astype(int)
     checks.append(("momentumBalance.dat at steps %s (expected 0 and %s)"

@@ -2,11 +2,16 @@
 # Case test: coupling.lambdaToleranceBetweenRecords.  Three free spheres
 # (one heavy) in a sheared channel, 6 steps, an HDF5 record every 3rd step
 # and fields at the end only, lambdaTolerance 1e-4 and 1e-2 between
-# records; the same case without the keyword beside it.  Checks in
-# checkToleranceBetweenRecords.py: the recorded steps stop below 1e-4, the
-# others between 1e-4 and 1e-2 in fewer outer iterations than the same
-# steps of the tight run; momentumBalance.dat holds the solves at 1e-4
-# only (the initial one and the recorded steps), particles.h5 the records.
+# records, with their own U and p solvers (fvSolution UBetweenRecords
+# smoothSolver, pBetweenRecords GAMG: PCG elsewhere) and one pressure
+# correction (nCorrectorsBetweenRecords, 2 elsewhere); the same case
+# without these keywords beside it.  Checks in
+# checkToleranceBetweenRecords.py: the recorded steps stop below 1e-4 with
+# the PCG solvers and 2 pressure corrections, the others between 1e-4 and
+# 1e-2 in fewer outer iterations than the same steps of the tight run,
+# with smoothSolver, GAMG and one correction; momentumBalance.dat holds
+# the solves at 1e-4 only (the initial one and the recorded steps),
+# particles.h5 the records.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir toleranceBetweenRecords)
@@ -37,6 +42,15 @@ cloneCase shearedSphere "$work/tight"
 cp -r "$work/tight" "$work/loose"
 foamDictionary -entry coupling.lambdaToleranceBetweenRecords -add 1e-2 \
     "$work/loose/constant/particleProperties" > /dev/null || exit 1
+fvSolution="$work/loose/system/fvSolution"
+foamDictionary -entry solvers.UBetweenRecords -add \
+    '{ solver smoothSolver; smoother symGaussSeidel; tolerance 1e-8;
+       relTol 0.3; }' "$fvSolution" > /dev/null || exit 1
+foamDictionary -entry solvers.pBetweenRecords -add \
+    '{ solver GAMG; smoother GaussSeidel; tolerance 1e-8; relTol 0.2; }' \
+    "$fvSolution" > /dev/null || exit 1
+foamDictionary -entry SIMPLEC.nCorrectorsBetweenRecords -add 1 \
+    "$fvSolution" > /dev/null || exit 1
 
 for name in tight loose
 do

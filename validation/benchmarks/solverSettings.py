@@ -99,6 +99,19 @@ SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 SETTINGS.update(
     ("RC%s" % f, (("SIMPLEC.RhieChowFactor", f, "fv"),))
     for f in ("0.9", "1"))
+# Inexact inner solves on the steps between records only, as the "loose"
+# part's but the records keep the case's own (fvSolution UBetweenRecords,
+# pBetweenRecords, SIMPLEC nCorrectorsBetweenRecords)
+SETTINGS["innerBetween"] = (
+    ("solvers.UBetweenRecords", "{solver PCG; preconditioner DIC; "
+     "tolerance 1e-7; relTol 0.3;}", "fv"),
+    ("solvers.pBetweenRecords", "{solver GAMG; smoother GaussSeidel; "
+     "tolerance 1e-7; relTol 0.2;}", "fv"),
+    ("SIMPLEC.nCorrectorsBetweenRecords", 1, "fv"))
+# A particle record every N steps (after a betweenRecords part)
+SETTINGS.update(
+    ("records%d" % n, (("output.timeSeriesInterval", n, "pp"),))
+    for n in (10, 25))
 # GAMG for U as a part (layerMean+relaxU0.99+gamg)
 SETTINGS["gamg"] = GAMG_U
 

@@ -18,7 +18,8 @@ void Foam::fdmOuterLoopControl::read()
     (
         d,
         {
-            "nCorrectors", "nOuterCorrectors", "outerTolerance",
+            "nCorrectors", "nCorrectorsBetweenRecords",
+            "nOuterCorrectors", "outerTolerance",
             "pRefCell", "pRefValue", "pRefPoint", "acceleration",
             "accelerationDepth", "layerMeanCorrection",
             "layerMeanViscosityRatio", "RhieChowFactor"
@@ -33,6 +34,15 @@ void Foam::fdmOuterLoopControl::read()
             << "nCorrectors " << nCorrectors_ << " in " << d.name()
             << ": allowed values are integers >= 1 (thesis: 2)"
             << exit(FatalIOError);
+    }
+    nCorrectorsBetweenRecords_ =
+        d.getOrDefault<label>("nCorrectorsBetweenRecords", nCorrectors_);
+    if (nCorrectorsBetweenRecords_ < 1)
+    {
+        FatalIOErrorInFunction(d)
+            << "nCorrectorsBetweenRecords " << nCorrectorsBetweenRecords_
+            << " in " << d.name() << ": allowed values are integers >= 1"
+            << " (default: nCorrectors)" << exit(FatalIOError);
     }
 
     nOuterCorrectors_ = d.get<label>("nOuterCorrectors");
@@ -52,10 +62,33 @@ void Foam::fdmOuterLoopControl::read()
             << ": allowed values are >= 0" << exit(FatalIOError);
     }
 
+    checkBetweenRecordsSolvers();
     readAcceleration(d);
     readLayerMeanCorrection(d);
     checkURelaxation();
     readRhieChowFactor(d);
+}
+
+
+void Foam::fdmOuterLoopControl::checkBetweenRecordsSolvers() const
+{
+    // Stock OpenFOAM ignores solvers no field asks for: a misspelt
+    // UBetweenRecords would silently leave the steps at the U solver
+    const dictionary& solvers = mesh_.solutionDict().subDict("solvers");
+    const wordList allowed({"UBetweenRecords", "pBetweenRecords"});
+    for (const word& key : solvers.toc())
+    {
+        const bool looksLike =
+            key.find("etween") != std::string::npos
+         || key.find("Record") != std::string::npos;
+        if (looksLike && !allowed.found(key))
+        {
+            FatalIOErrorInFunction(solvers)
+                << "Unknown solver " << key << " in " << solvers.name()
+                << ": did you mean " << fdm::nearestSpelling(key, allowed)
+                << "? Allowed: " << allowed << exit(FatalIOError);
+        }
+    }
 }
 
 
@@ -149,6 +182,7 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
     mesh_(mesh),
     algorithmName_(algorithmName),
     nCorrectors_(2),
+    nCorrectorsBetweenRecords_(2),
     nOuterCorrectors_(1),
     outerTolerance_(0),
     accelerationDepth_(0),
@@ -176,6 +210,20 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
 const Foam::dictionary& Foam::fdmOuterLoopControl::dict() const
 {
     return mesh_.solutionDict().subDict(algorithmName_);
+}
+
+
+const Foam::dictionary& Foam::fdmOuterLoopControl::solverDict
+(
+    const word& field,
+    const bool betweenRecords
+) const
+{
+    const word loose(field + "BetweenRecords");
+    const bool found =
+        betweenRecords
+     && mesh_.solutionDict().subDict("solvers").found(loose);
+    return mesh_.solverDict(found ? loose : field);
 }
 
 
