@@ -91,7 +91,7 @@ SETTINGS.update(
     ("betweenRecords%s" % t, (
         ("coupling.lambdaToleranceBetweenRecords", t, "pp"),
         ("output.timeSeriesInterval", 5, "pp")))
-    for t in ("3e-3", "6.4e-3", "1e-2"))
+    for t in ("3e-3", "6.4e-3", "1e-2", "1.28e-2", "2e-2"))
 # Consistent overlapping supports as a part (reference+consistent)
 SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 # The Rhie-Chow coefficient of the converged face flux in units of 1/a_C as
@@ -178,6 +178,16 @@ def remesh(case, time, delta, suffix):
              '"$FDM_PROJECT_DIR/data/resistance/subGridWall%s"' % suffix, pp)
 
 
+def solve_as_between_records(case, setting):
+    """Make a written step of the case solve as a step between records of
+    the setting: its BetweenRecords solvers and corrections in place of
+    the plain ones."""
+    for entry, value, where in setting_entries(setting):
+        if "BetweenRecords" in entry:
+            foam_set(case, entry.replace("BetweenRecords", ""), value,
+                     FILES[where])
+
+
 def check_setting(setting):
     """Stop on an unknown name in NAME[+PART...][@TOL]."""
     for part in setting.partition("@")[0].split("+"):
@@ -191,12 +201,17 @@ def case_suffix(setting):
     return setting.replace("@", "_tol").replace("+", "_")
 
 
+def setting_entries(setting):
+    """The (entry, value, file) edits of a setting's parts, in order."""
+    check_setting(setting)
+    return [e for part in setting.partition("@")[0].split("+")
+            for e in SETTINGS[part]]
+
+
 def apply_setting(case, setting):
     """Write the setting's entries into the case's dictionaries."""
-    check_setting(setting)
     name, _, tol = setting.partition("@")
-    for part in name.split("+"):
-        for entry, value, where in SETTINGS[part]:
-            foam_set(case, entry, value, FILES[where])
+    for entry, value, where in setting_entries(setting):
+        foam_set(case, entry, value, FILES[where])
     if tol:
         foam_set(case, "coupling.lambdaTolerance", tol, FILES["pp"])

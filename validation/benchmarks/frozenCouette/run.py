@@ -252,7 +252,8 @@ from fdmPost.particleCase import momentum_balance, read_list  # noqa
 from fdmPost.rheology import number  # noqa: E402
 sys.path.insert(0, os.path.dirname(HERE))
 from solverSettings import (apply_mesh, apply_setting,  # noqa: E402
-                            case_suffix, check_setting)
+                            case_suffix, check_setting,
+                            solve_as_between_records)
 
 # Settings that stop the steps between records at a looser residual
 BETWEEN_RECORDS = "betweenRecords"
@@ -264,9 +265,9 @@ STATE_KEYS = (("position", 3), ("radius", 1), ("velocity", 3),
 def setting_case(snapshot, time, setting, work, steps=1, replay=False):
     """A copy of the snapshot with the setting's edits that runs `steps`
     steps from T; returns the case and its end time.  replay: every step
-    at the looser residual of a betweenRecords setting, the last written
-    too, so that the case reaches the state of the setting's run one
-    step before its measured one."""
+    solved as between records of a betweenRecords setting (residual, inner
+    solvers), the last written too, so that the case reaches the state of
+    the setting's run one step before its measured one."""
     check_setting(setting)
     case = os.path.join(work, "%s_%s%s%s" % (
         os.path.basename(snapshot), case_suffix(setting),
@@ -300,6 +301,7 @@ def setting_case(snapshot, time, setting, work, steps=1, replay=False):
         foam_set(case, "coupling.lambdaTolerance",
                  foam_get(case, "coupling.lambdaToleranceBetweenRecords", pp),
                  pp)
+        solve_as_between_records(case, setting)
     return case, end
 
 

@@ -7,6 +7,7 @@
 #include "checkKeywords.H"
 #include "OStringStream.H"
 
+#include <algorithm>
 #include <cmath>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -75,18 +76,27 @@ void Foam::fdmOuterLoopControl::checkBetweenRecordsSolvers() const
     // Stock OpenFOAM ignores solvers no field asks for: a misspelt
     // UBetweenRecords would silently leave the steps at the U solver
     const dictionary& solvers = mesh_.solutionDict().subDict("solvers");
-    const wordList allowed({"UBetweenRecords", "pBetweenRecords"});
-    for (const word& key : solvers.toc())
+    const std::vector<std::string> allowed
+        {"UBetweenRecords", "pBetweenRecords"};
+    for (const entry& e : solvers)
     {
+        const keyType& key = e.keyword();
         const bool looksLike =
-            key.find("etween") != std::string::npos
-         || key.find("Record") != std::string::npos;
-        if (looksLike && !allowed.found(key))
+            !key.isPattern()
+         && (
+                key.find("etween") != std::string::npos
+             || key.find("ecord") != std::string::npos
+            );
+        const bool known =
+            std::find(allowed.begin(), allowed.end(), key) != allowed.end();
+        if (looksLike && !known)
         {
             FatalIOErrorInFunction(solvers)
                 << "Unknown solver " << key << " in " << solvers.name()
-                << ": did you mean " << fdm::nearestSpelling(key, allowed)
-                << "? Allowed: " << allowed << exit(FatalIOError);
+                << ": did you mean "
+                << word(fdm::nearestSpelling(key, allowed))
+                << "? Allowed: UBetweenRecords, pBetweenRecords"
+                << exit(FatalIOError);
         }
     }
 }
