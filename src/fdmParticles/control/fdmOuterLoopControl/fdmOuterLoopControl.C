@@ -10,6 +10,37 @@
 #include <algorithm>
 #include <cmath>
 
+// * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- A count >= 1 of d: required (deflt < 0) or with the default deflt
+Foam::label readCount
+(
+    const Foam::dictionary& d,
+    const Foam::word& key,
+    const Foam::label deflt,
+    const char* note
+)
+{
+    const Foam::label n =
+        deflt < 0
+      ? d.get<Foam::label>(key)
+      : d.getOrDefault<Foam::label>(key, deflt);
+    if (n < 1)
+    {
+        FatalIOErrorInFunction(d)
+            << key << ' ' << n << " in " << d.name()
+            << ": allowed values are integers >= 1" << note
+            << Foam::exit(Foam::FatalIOError);
+    }
+    return n;
+}
+
+} // namespace
+
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::fdmOuterLoopControl::read()
@@ -28,32 +59,12 @@ void Foam::fdmOuterLoopControl::read()
         algorithmName_ + " block"
     );
 
-    nCorrectors_ = d.get<label>("nCorrectors");
-    if (nCorrectors_ < 1)
-    {
-        FatalIOErrorInFunction(d)
-            << "nCorrectors " << nCorrectors_ << " in " << d.name()
-            << ": allowed values are integers >= 1 (thesis: 2)"
-            << exit(FatalIOError);
-    }
-    nCorrectorsBetweenRecords_ =
-        d.getOrDefault<label>("nCorrectorsBetweenRecords", nCorrectors_);
-    if (nCorrectorsBetweenRecords_ < 1)
-    {
-        FatalIOErrorInFunction(d)
-            << "nCorrectorsBetweenRecords " << nCorrectorsBetweenRecords_
-            << " in " << d.name() << ": allowed values are integers >= 1"
-            << " (default: nCorrectors)" << exit(FatalIOError);
-    }
-
-    nOuterCorrectors_ = d.get<label>("nOuterCorrectors");
-    if (nOuterCorrectors_ < 1)
-    {
-        FatalIOErrorInFunction(d)
-            << "nOuterCorrectors " << nOuterCorrectors_ << " in "
-            << d.name() << ": allowed values are integers >= 1"
-            << exit(FatalIOError);
-    }
+    nCorrectors_ = readCount(d, "nCorrectors", -1, " (thesis: 2)");
+    nCorrectorsBetweenRecords_ = readCount
+    (
+        d, "nCorrectorsBetweenRecords", nCorrectors_, " (default: nCorrectors)"
+    );
+    nOuterCorrectors_ = readCount(d, "nOuterCorrectors", -1, "");
 
     outerTolerance_ = d.get<scalar>("outerTolerance");
     if (!(outerTolerance_ >= 0))
