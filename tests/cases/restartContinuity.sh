@@ -3,7 +3,8 @@
 # (read with particlesFile, two groups, one heavy) in a sheared channel
 # move for 4 Adams-Bashforth steps; the same case stopped after 2 steps and
 # restarted from the written time must reach the same particle state and
-# the HDF5 series must hold each step once.  Checks in checkRestart.py.
+# the HDF5 series must hold each step once (the straight run started from
+# outside its case directory with -case).  Checks in checkRestart.py.
 # The suspensionStress function object runs at every write and again
 # afterwards with postProcess; checkSuspensionStress.py compares it with
 # fdmPost.rheology on the HDF5 records.
@@ -46,7 +47,11 @@ LIST
 ) || exit 1
 
 cp -r "$work/straight" "$work/restarted"
-(cd "$work/straight" && runLogged fdmSuspensionFoam) || exit 1
+# From outside the case (-case): particlesFile is found in its constant/
+(
+    cd "$work" && runLogged fdmSuspensionFoam -case straight &&
+    mv log.fdmSuspensionFoam straight/
+) || exit 1
 (
     cd "$work/restarted" || exit 1
     foamDictionary -entry endTime -set 0.1 system/controlDict > /dev/null

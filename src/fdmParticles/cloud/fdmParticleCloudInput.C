@@ -146,7 +146,10 @@ Foam::label Foam::fdmParticleCloud::groupIndex
 void Foam::fdmParticleCloud::readParticles()
 {
     fdm::particleList list =
-        fdm::readParticleList(dict_, mesh_.time().constant());
+        fdm::readParticleList
+        (
+            dict_, mesh_.time().globalPath()/mesh_.time().constant()
+        );
 
     state_.group.setSize(list.group.size());
     forAll(list.group, i)

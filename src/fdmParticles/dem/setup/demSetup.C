@@ -164,7 +164,10 @@ Foam::fdm::lubricatedDEM Foam::fdm::createDEM
     setNeighbours(dem, props);
 
     const fdm::particleList list =
-        fdm::readParticleList(props, runTime.constant());
+        fdm::readParticleList
+        (
+            props, runTime.globalPath()/runTime.constant()
+        );
     const wordList fixedGroups
     (
         props.getOrDefault<wordList>("fixedGroups", wordList())
