@@ -10,21 +10,26 @@ tables calibrated there (apply_mesh).
 import os
 import re
 import shutil
+import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
-from fdmPost.caseRunner import foam_get, foam_set, run_logged  # noqa: E402
+from fdmPost.caseRunner import (foam_get, foam_set, in_case,  # noqa: E402
+                                run_logged)
 
 FILES = {"fv": "system/fvSolution", "pp": "constant/particleProperties"}
-# The inner solves and the lambda residual of every step of the Couette
-# tutorial until issue 30 (a snapshot cloned from the tutorial since has
-# looser steps between records)
+# The inner solves, the lambda residual of every step and the coupling of
+# the Couette tutorial until issue 30 (a snapshot cloned from the tutorial
+# since has looser steps between records, consistent overlaps and half
+# the lambda step)
 PREVIOUS_SOLVES = (("SIMPLEC.nCorrectors", 2, "fv"),
                    ("solvers.p.relTol", 0.05, "fv"),
                    ("solvers.U.relTol", 0.1, "fv"),
                    ("coupling.lambdaTolerance", 1e-3, "pp"),
-                   ("coupling.lambdaToleranceBetweenRecords", 1e-3, "pp"))
+                   ("coupling.lambdaToleranceBetweenRecords", 1e-3, "pp"),
+                   ("coupling.overlaps", "thesis", "pp"),
+                   ("coupling.alphaLambdaFactor", 1, "pp"))
 # The tutorial's settings before issue 30: the layer means left to the
 # outer iteration
 PREVIOUS = (("SIMPLEC.layerMeanCorrection", "off", "fv"),) + PREVIOUS_SOLVES
@@ -179,13 +184,29 @@ def remesh(case, time, delta, suffix):
 
 
 def solve_as_between_records(case, setting):
-    """Make a written step of the case solve as a step between records of
-    the setting: its BetweenRecords solvers and corrections in place of
-    the plain ones."""
-    for entry, value, where in setting_entries(setting):
-        if "BetweenRecords" in entry:
-            foam_set(case, entry.replace("BetweenRecords", ""), value,
-                     FILES[where])
+    """Make a written step of the case solve as a step between records:
+    the BetweenRecords solvers and corrections of the case (a snapshot of
+    the tutorial has them) and of the setting in place of the plain
+    ones."""
+    own = expanded_between_records(case)
+    own += [e for e in setting_entries(setting) if "BetweenRecords" in e[0]]
+    for entry, value, where in own:
+        foam_set(case, entry.replace("BetweenRecords", ""), value,
+                 FILES[where])
+
+
+def expanded_between_records(case):
+    """The case's fvSolution entries named *BetweenRecords, macros
+    expanded (foamDictionary -expand prints the whole file)."""
+    out = subprocess.run(["foamDictionary", "-expand", FILES["fv"]],
+                         cwd=case, stdout=subprocess.PIPE, check=True,
+                         env=in_case(case)).stdout.decode()
+    found = [("solvers.%s" % m.group(1), "{%s}" % m.group(2), "fv")
+             for m in re.finditer(r"^    (\w+BetweenRecords)\s*\{(.*?)^    \}",
+                                  out, re.M | re.S)]
+    return found + [("SIMPLEC.%s" % m.group(1), m.group(2), "fv")
+                    for m in re.finditer(r"^    (nCorrectorsBetweenRecords)"
+                                         r"\s+(\d+);", out, re.M)]
 
 
 def check_setting(setting):
