@@ -40,7 +40,7 @@ expectFatal negativeCorrectorsBetweenRecords system/fvSolution \
     "nCorrectorsBetweenRecords 0" ">= 1"
 expectFatal misspeltBetweenRecordsSolver system/fvSolution \
     's/^    U$/    UBetweenRecord { solver PCG; preconditioner DIC; tolerance 1e-8; relTol 0; }\n&/' \
-    "Unknown solver UBetweenRecord" "did you mean UBetweenRecords"
+    "Unknown solver 'UBetweenRecord'" "nearest valid spelling: 'UBetweenRecords'"
 expectFatal missingRelaxation system/fvSolution \
     's/U               0.9;//' relaxationFactors "0 < U < 1"
 expectFatal unknownAcceleration system/fvSolution \

@@ -163,11 +163,10 @@ Foam::fdm::lubricatedDEM Foam::fdm::createDEM
     setDrag(dem, props);
     setNeighbours(dem, props);
 
-    const fdm::particleList list =
-        fdm::readParticleList
-        (
-            props, runTime.globalPath()/runTime.constant()
-        );
+    const fdm::particleList list = fdm::readParticleList
+    (
+        props, runTime.globalPath()/runTime.constant()
+    );
     const wordList fixedGroups
     (
         props.getOrDefault<wordList>("fixedGroups", wordList())
