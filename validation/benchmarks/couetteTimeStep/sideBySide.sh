@@ -45,9 +45,11 @@ do
     foamDictionary -entry writeInterval -set "$strain" "$dict" > /dev/null
     foamDictionary -entry functions -set "{}" "$dict" > /dev/null
 done
-(source "$old/etc/bashrc" > /dev/null 2>&1
- fdmSuspensionFoam -case "$work/case.old" > "$work/case.old/log" 2>&1) &
-fdmSuspensionFoam -case "$work/case.new" > "$work/case.new/log" 2>&1
+# Each from its case directory: builds before the fix of particlesFile
+# paths cannot run with -case from elsewhere
+(cd "$work/case.old" && source "$old/etc/bashrc" > /dev/null 2>&1 &&
+ fdmSuspensionFoam > log 2>&1) &
+(cd "$work/case.new" && fdmSuspensionFoam > log 2>&1)
 wait
 for c in old new
 do
