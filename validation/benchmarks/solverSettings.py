@@ -201,12 +201,13 @@ def expanded_between_records(case):
     out = subprocess.run(["foamDictionary", "-expand", FILES["fv"]],
                          cwd=case, stdout=subprocess.PIPE, check=True,
                          env=in_case(case)).stdout.decode()
-    found = [("solvers.%s" % m.group(1), "{%s}" % m.group(2), "fv")
-             for m in re.finditer(r"^    (\w+BetweenRecords)\s*\{(.*?)^    \}",
-                                  out, re.M | re.S)]
-    return found + [("SIMPLEC.%s" % m.group(1), m.group(2), "fv")
-                    for m in re.finditer(r"^    (nCorrectorsBetweenRecords)"
-                                         r"\s+(\d+);", out, re.M)]
+    solvers = re.finditer(r"^    (\w+BetweenRecords)\s*\{(.*?)^    \}",
+                          out, re.M | re.S)
+    counts = re.finditer(r"^    (nCorrectorsBetweenRecords)\s+(\d+);", out,
+                         re.M)
+    return ([("solvers.%s" % m.group(1), "{%s}" % m.group(2), "fv")
+             for m in solvers]
+            + [("SIMPLEC.%s" % m.group(1), m.group(2), "fv") for m in counts])
 
 
 def check_setting(setting):
@@ -231,7 +232,7 @@ def setting_entries(setting):
 
 def apply_setting(case, setting):
     """Write the setting's entries into the case's dictionaries."""
-    name, _, tol = setting.partition("@")
+    tol = setting.partition("@")[2]
     for entry, value, where in setting_entries(setting):
         foam_set(case, entry, value, FILES[where])
     if tol:
