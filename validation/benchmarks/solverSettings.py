@@ -183,14 +183,11 @@ def remesh(case, time, delta, suffix):
              '"$FDM_PROJECT_DIR/data/resistance/subGridWall%s"' % suffix, pp)
 
 
-def solve_as_between_records(case, setting):
+def solve_as_between_records(case):
     """Make a written step of the case solve as a step between records:
-    the BetweenRecords solvers and corrections of the case (a snapshot of
-    the tutorial has them) and of the setting in place of the plain
-    ones."""
-    own = expanded_between_records(case)
-    own += [e for e in setting_entries(setting) if "BetweenRecords" in e[0]]
-    for entry, value, where in own:
+    its BetweenRecords solvers and corrections (its own or a setting's,
+    once applied) in place of the plain ones."""
+    for entry, value, where in expanded_between_records(case):
         foam_set(case, entry.replace("BetweenRecords", ""), value,
                  FILES[where])
 
@@ -223,17 +220,12 @@ def case_suffix(setting):
     return setting.replace("@", "_tol").replace("+", "_")
 
 
-def setting_entries(setting):
-    """The (entry, value, file) edits of a setting's parts, in order."""
-    check_setting(setting)
-    return [e for part in setting.partition("@")[0].split("+")
-            for e in SETTINGS[part]]
-
-
 def apply_setting(case, setting):
     """Write the setting's entries into the case's dictionaries."""
-    tol = setting.partition("@")[2]
-    for entry, value, where in setting_entries(setting):
-        foam_set(case, entry, value, FILES[where])
+    check_setting(setting)
+    name, _, tol = setting.partition("@")
+    for part in name.split("+"):
+        for entry, value, where in SETTINGS[part]:
+            foam_set(case, entry, value, FILES[where])
     if tol:
         foam_set(case, "coupling.lambdaTolerance", tol, FILES["pp"])

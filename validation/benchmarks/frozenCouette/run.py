@@ -301,7 +301,7 @@ def setting_case(snapshot, time, setting, work, steps=1, replay=False):
         foam_set(case, "coupling.lambdaTolerance",
                  foam_get(case, "coupling.lambdaToleranceBetweenRecords", pp),
                  pp)
-        solve_as_between_records(case, setting)
+        solve_as_between_records(case)
     return case, end
 
 

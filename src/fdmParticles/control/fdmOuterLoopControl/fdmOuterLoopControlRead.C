@@ -115,14 +115,7 @@ void Foam::fdmOuterLoopControl::readAcceleration(const dictionary& d)
     }
     else if (acceleration == "anderson")
     {
-        accelerationDepth_ = d.getOrDefault<label>("accelerationDepth", 8);
-        if (accelerationDepth_ < 1)
-        {
-            FatalIOErrorInFunction(d)
-                << "accelerationDepth " << accelerationDepth_ << " in "
-                << d.name() << ": allowed values are integers >= 1"
-                << exit(FatalIOError);
-        }
+        accelerationDepth_ = readCount(d, "accelerationDepth", 8, "");
     }
     else
     {
