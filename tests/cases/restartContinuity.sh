@@ -1,8 +1,9 @@
 #!/bin/bash
 # Case test: a restart continues the same trajectory.  Three particles
 # (read with particlesFile, two groups, one heavy) in a sheared channel
-# move for 4 Adams-Bashforth steps; the same case stopped after 2 steps and
-# restarted from the written time must reach the same particle state and
+# move for 4 Adams-Bashforth steps; the same case written every 2 steps and
+# stopped after 3 (between write times: a run's last step is written too)
+# and restarted from its latest time must reach the same particle state and
 # the HDF5 series must hold each step once (the straight run started from
 # outside its case directory with -case).  Checks in checkRestart.py.
 # The suspensionStress function object runs at every write and again
@@ -54,8 +55,10 @@ cp -r "$work/straight" "$work/restarted"
 ) || exit 1
 (
     cd "$work/restarted" || exit 1
-    foamDictionary -entry endTime -set 0.1 system/controlDict > /dev/null
+    foamDictionary -entry writeInterval -set 2 system/controlDict > /dev/null
+    foamDictionary -entry endTime -set 0.15 system/controlDict > /dev/null
     runLogged fdmSuspensionFoam || exit 1
+    [ -f 0.15/particleState ] || { echo "FAIL: the last step, 0.15, not written"; exit 1; }
     foamDictionary -entry endTime -set 0.2 system/controlDict > /dev/null
     foamDictionary -entry startFrom -set latestTime system/controlDict \
         > /dev/null

@@ -75,7 +75,7 @@ SETTINGS = {
 # flow around it
 SETTINGS.update(
     ("relaxU%s" % a, (("relaxationFactors.equations.U", a, "fv"),))
-    for a in ("0.98", "0.99", "0.995"))
+    for a in ("0.8", "0.98", "0.99", "0.995"))
 # The Anderson depth as a part (layerMean+depth16)
 SETTINGS.update(
     ("depth%d" % m, (("SIMPLEC.accelerationDepth", m, "fv"),))
@@ -96,7 +96,7 @@ SETTINGS.update(
     ("betweenRecords%s" % t, (
         ("coupling.lambdaToleranceBetweenRecords", t, "pp"),
         ("output.timeSeriesInterval", 5, "pp")))
-    for t in ("3e-3", "6.4e-3", "1e-2", "1.28e-2", "2e-2"))
+    for t in ("3e-3", "6.4e-3", "1e-2", "1.28e-2", "2e-2", "4e-2"))
 # Consistent overlapping supports as a part (reference+consistent)
 SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 # The Rhie-Chow coefficient of the converged face flux in units of 1/a_C as

@@ -145,8 +145,7 @@ int main(int argc, char *argv[])
             tracks.append(dem);
         }
         // A progress line every 10 s of wall time and at the end
-        const bool last =
-            runTime.value() > runTime.endTime().value() - 0.5*dt;
+        const bool last = fdm::lastStepOfRun(runTime);
         if (clock.elapsedTime() >= lastReport + 10 || last)
         {
             lastReport = clock.elapsedTime();
@@ -155,7 +154,7 @@ int main(int argc, char *argv[])
         }
 
         vtk.write(dem, runTime, stepCount);
-        if (runTime.writeTime())
+        if (runTime.writeTime() || last)
         {
             fdm::writeDEMState(dem, runTime);
         }

@@ -7,6 +7,7 @@
 #include "lagrangianCloudWriter.H"
 #include "particleVTKWriter.H"
 #include "checkKeywords.H"
+#include "checkTimeControls.H"
 #include <cctype>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -91,6 +92,7 @@ bool Foam::particleCloudOutput::recordDue() const
     return
         timeSeriesDue()
      || runTime.writeTime()
+     || fdm::lastStepOfRun(runTime)
      || fdm::particleVTKWriter::due
         (
             vtkInterval_, runTime.timeIndex(), runTime.writeTime()

@@ -29,4 +29,12 @@ void Foam::fdm::checkTimeControls(const Time& runTime)
 }
 
 
+bool Foam::fdm::lastStepOfRun(const Time& runTime)
+{
+    return
+        runTime.value()
+     >= runTime.endTime().value() - 0.5*runTime.deltaTValue();
+}
+
+
 // ************************************************************************* //
