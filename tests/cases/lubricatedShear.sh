@@ -1,8 +1,10 @@
 #!/bin/bash
 # Case test: lubricatedDEMFoam (lubrication-only DEM, Lees-Edwards cell).
 # A dilute bidisperse packing (phi 0.3, 13^3 cell) sheared to strain 0.4:
-#  - a restart from the state written at 0.2 ends bitwise where the straight
-#    run ends (positions, velocities, pair history);
+#  - a restart from the state written at 0.25, the first run's last step
+#    (between the write times 0.2 and 0.4: a run's last step is written
+#    too), ends bitwise where the straight run ends (positions, velocities,
+#    pair history);
 #  - the time series is written and the mean fluctuation momentum stays
 #    zero (pairwise forces, checked to 1e-10 of the rms momentum);
 #  - output{track} writes the tracked particles' positions (last row equal
@@ -33,8 +35,9 @@ setUp "$work/straight"
 setUp "$work/restarted"
 (
     cd "$work/restarted" || exit 1
-    sed -i 's/^endTime .*/endTime 0.2;/' system/controlDict
+    sed -i 's/^endTime .*/endTime 0.25;/' system/controlDict
     runLogged lubricatedDEMFoam || exit 1
+    [ -f 0.25/particleState ] || { echo "FAIL: the last step, 0.25, not written"; exit 1; }
     sed -i 's/^endTime .*/endTime 0.4;/' system/controlDict
     mv log.lubricatedDEMFoam log.first
     runLogged lubricatedDEMFoam
