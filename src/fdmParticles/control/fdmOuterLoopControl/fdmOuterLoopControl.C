@@ -23,6 +23,7 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
     nOuterCorrectors_(1),
     outerTolerance_(0),
     accelerationDepth_(0),
+    accelerationRestart_(false),
     layerMeanCorrection_(false),
     layerMeanViscosityRatio_(16),
     RhieChowFactor_(0),

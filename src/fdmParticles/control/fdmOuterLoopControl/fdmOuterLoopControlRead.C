@@ -54,7 +54,8 @@ void Foam::fdmOuterLoopControl::read()
             "nCorrectors", "nCorrectorsBetweenRecords",
             "nOuterCorrectors", "outerTolerance",
             "pRefCell", "pRefValue", "pRefPoint", "acceleration",
-            "accelerationDepth", "layerMeanCorrection",
+            "accelerationDepth", "accelerationRestart",
+            "layerMeanCorrection",
             "layerMeanViscosityRatio", "RhieChowFactor"
         },
         algorithmName_ + " block"
@@ -116,6 +117,8 @@ void Foam::fdmOuterLoopControl::readAcceleration(const dictionary& d)
     else if (acceleration == "anderson")
     {
         accelerationDepth_ = readCount(d, "accelerationDepth", 8, "");
+        accelerationRestart_ =
+            d.getOrDefault<bool>("accelerationRestart", true);
     }
     else
     {

@@ -33,11 +33,15 @@ Foam::scalar localDot(const Foam::scalarField& a, const Foam::scalarField& b)
 Foam::fdm::andersonAcceleration::andersonAcceleration
 (
     const label depth,
-    const reduction& reduce
+    const reduction& reduce,
+    const bool restartOnGrowth
 )
 :
     depth_(depth),
     reduce_(reduce),
+    restartOnGrowth_(restartOnGrowth),
+    fNorm2Prev_(GREAT),
+    restarts_(0),
     gram_(depth*depth, Zero)
 {}
 
@@ -102,6 +106,22 @@ void Foam::fdm::andersonAcceleration::reset()
     fPrev_.clear();
     dG_.clear();
     dF_.clear();
+    fNorm2Prev_ = GREAT;
+    restarts_ = 0;
+}
+
+
+bool Foam::fdm::andersonAcceleration::restartIfGrown(const scalar fNorm2)
+{
+    const bool grown = restartOnGrowth_ && fNorm2 > fNorm2Prev_;
+    fNorm2Prev_ = fNorm2;
+    if (grown)
+    {
+        dF_.clear();
+        dG_.clear();
+        ++restarts_;
+    }
+    return grown;
 }
 
 
@@ -129,9 +149,10 @@ void Foam::fdm::andersonAcceleration::update
         return;
     }
 
-    // Partial sums of the new Gram row dF_{m-1} . dF_j and of the
-    // right-hand side dF_i . f, summed over processors in one reduction
-    List<scalar> dots(2*m, Zero);
+    // Partial sums of the new Gram row dF_{m-1} . dF_j, of the right-hand
+    // side dF_i . f and of f . f, summed over processors in one reduction
+    List<scalar> dots(2*m + 1, Zero);
+    dots[2*m] = localDot(f, f);
     for (label i = 0; i < m; ++i)
     {
         if (appended)
@@ -141,6 +162,10 @@ void Foam::fdm::andersonAcceleration::update
         dots[m + i] = localDot(dF_[i], f);
     }
     reduce_(dots);
+    if (restartIfGrown(dots[2*m]))
+    {
+        return;
+    }
     if (appended)
     {
         for (label j = 0; j < m; ++j)

@@ -41,9 +41,17 @@ scalar errorOf(const scalarField& x)
     return e;
 }
 
-label iterationsToConverge(const label depth, const label n)
+label iterationsToConverge
+(
+    const label depth,
+    const label n,
+    const bool restartOnGrowth = false
+)
 {
-    fdm::andersonAcceleration aa(depth);
+    fdm::andersonAcceleration aa
+    (
+        depth, [](List<scalar>&) {}, restartOnGrowth
+    );
     scalarField x(n, Zero), g;
     for (label k = 1; k <= 20000; ++k)
     {
@@ -74,6 +82,47 @@ TEST(andersonAcceleration, reachesTheFixedPointOfASlowLinearMap)
     ASSERT_GT(plain, 0);
     ASSERT_GT(accelerated, 0);
     EXPECT_LT(accelerated, plain/10);
+
+    // Restarted whenever the residual grows, still far ahead of plain
+    // iteration
+    const label restarted = iterationsToConverge(8, n, true);
+    ASSERT_GT(restarted, 0);
+    EXPECT_LT(restarted, plain/10);
+}
+
+
+TEST(andersonAcceleration, restartsWhenTheResidualGrows)
+{
+    // Residuals f = g - x of norms 1, 0.5, then 2: the third update drops
+    // the history and returns the plain iterate; without restarts the
+    // history is kept and the iterate extrapolated.
+    for (const bool restart : {true, false})
+    {
+        fdm::andersonAcceleration aa(4, [](List<scalar>&) {}, restart);
+        scalarField x(3, 0.0), g(3, 1.0);
+        aa.update(x, g);
+        x = scalarField(3, 1.0);
+        g = scalarField(3, 1.5);
+        aa.update(x, g);
+        ASSERT_EQ(aa.size(), 1);
+        x = scalarField(3, 1.5);
+        g = scalarField(3, 3.5);
+        aa.update(x, g);
+        if (restart)
+        {
+            EXPECT_EQ(aa.size(), 0);
+            EXPECT_EQ(aa.restarts(), 1);
+            EXPECT_DOUBLE_EQ(g[0], 3.5);
+        }
+        else
+        {
+            EXPECT_EQ(aa.size(), 2);
+            EXPECT_EQ(aa.restarts(), 0);
+            EXPECT_GT(mag(g[0] - 3.5), 0.1);
+        }
+        aa.reset();
+        EXPECT_EQ(aa.restarts(), 0);
+    }
 }
 
 
