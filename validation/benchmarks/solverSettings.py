@@ -97,7 +97,7 @@ SETTINGS.update(
     ("betweenRecords%s" % t, (
         ("coupling.lambdaToleranceBetweenRecords", t, "pp"),
         ("output.timeSeriesInterval", 5, "pp")))
-    for t in ("3e-3", "6.4e-3", "1e-2", "1.28e-2", "2e-2", "4e-2"))
+    for t in ("3e-3", "6.4e-3", "1e-2", "1.28e-2", "2e-2", "3e-2", "4e-2"))
 # Consistent overlapping supports as a part (reference+consistent)
 SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 # The Rhie-Chow coefficient of the converged face flux in units of 1/a_C as
@@ -127,6 +127,8 @@ SETTINGS["gamg"] = GAMG_U
 SETTINGS["tightP"] = (("solvers.p.relTol", 0.01, "fv"),
                       ("solvers.U.relTol", 0.3, "fv"),
                       ("SIMPLEC.nCorrectors", 1, "fv"))
+# The same with U as the case has it (part tightPonly)
+SETTINGS["tightPonly"] = SETTINGS["tightP"][::2]
 # The Anderson history kept when the residual grows (part noRestart)
 SETTINGS["noRestart"] = (("SIMPLEC.accelerationRestart", "off", "fv"),)
 

@@ -2,7 +2,7 @@
 # The commit before issue 30 built and run side by side with this tree
 # (issue 30, "Must show"): STRAIN (default 0.24) of the sheared phi0 = 0.42
 # suspension from the couetteTimeStep snapshot, at gammaDot deltaT 4e-3,
-# with the old build and its tutorial settings and with this build and
+# with the old build and its tutorial's settings and with this build and
 # the setting of one couetteTimeStep run, both at once on the 2 cores;
 # prints each solver's Timing line and core-seconds per strain.
 #
@@ -28,10 +28,15 @@ then
     (cd "$old" && ./Allwmake > "$work/log.Allwmake.$commit" 2>&1) || exit 1
 fi
 
-# Old: the snapshot with the settings of its time (no layer-mean keys)
+# Old: the snapshot with the Couette tutorial's solver and coupling
+# settings of that commit, as its users ran it
 rm -rf "$work/case.old" "$work/case.new"
 cp -r "$snapshot" "$work/case.old"
-sed -i '/layerMean/d' "$work/case.old/system/fvSolution"
+for f in system/fvSolution constant/particleProperties
+do
+    git -C "$FDM_PROJECT_DIR" show "$commit:tutorials/couette/$f" \
+        > "$work/case.old/$f" || exit 1
+done
 # New: the same start with the run's dictionaries
 mkdir -p "$work/case.new"
 cp -r "$newRun"/{constant,system} "$snapshot/1" "$work/case.new"/
