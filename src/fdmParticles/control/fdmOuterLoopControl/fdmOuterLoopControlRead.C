@@ -118,7 +118,7 @@ void Foam::fdmOuterLoopControl::readAcceleration(const dictionary& d)
     {
         accelerationDepth_ = readCount(d, "accelerationDepth", 8, "");
         accelerationRestart_ =
-            d.getOrDefault<bool>("accelerationRestart", true);
+            d.getOrDefault<bool>("accelerationRestart", false);
     }
     else
     {
