@@ -41,7 +41,6 @@ Foam::fdm::andersonAcceleration::andersonAcceleration
     reduce_(reduce),
     restartOnGrowth_(restartOnGrowth),
     fNorm2Prev_(GREAT),
-    restarts_(0),
     gram_(depth*depth, Zero)
 {}
 
@@ -107,7 +106,6 @@ void Foam::fdm::andersonAcceleration::reset()
     dG_.clear();
     dF_.clear();
     fNorm2Prev_ = GREAT;
-    restarts_ = 0;
 }
 
 
@@ -119,7 +117,6 @@ bool Foam::fdm::andersonAcceleration::restartIfGrown(const scalar fNorm2)
     {
         dF_.clear();
         dG_.clear();
-        ++restarts_;
     }
     return grown;
 }

@@ -111,17 +111,13 @@ TEST(andersonAcceleration, restartsWhenTheResidualGrows)
         if (restart)
         {
             EXPECT_EQ(aa.size(), 0);
-            EXPECT_EQ(aa.restarts(), 1);
             EXPECT_DOUBLE_EQ(g[0], 3.5);
         }
         else
         {
             EXPECT_EQ(aa.size(), 2);
-            EXPECT_EQ(aa.restarts(), 0);
             EXPECT_GT(mag(g[0] - 3.5), 0.1);
         }
-        aa.reset();
-        EXPECT_EQ(aa.restarts(), 0);
     }
 }
 
