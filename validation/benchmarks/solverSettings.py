@@ -30,20 +30,23 @@ PREVIOUS_SOLVES = (("SIMPLEC.nCorrectors", 2, "fv"),
                    ("coupling.lambdaToleranceBetweenRecords", 1e-3, "pp"),
                    ("coupling.overlaps", "thesis", "pp"),
                    ("coupling.alphaLambdaFactor", 1, "pp"))
+# The Anderson history kept when the residual grows (SIMPLEC
+# accelerationRestart off)
+NO_RESTART = (("SIMPLEC.accelerationRestart", "off", "fv"),)
 # The tutorial's settings before issue 30: the layer means left to the
-# outer iteration, the Anderson history kept when the residual grows
-PREVIOUS = (("SIMPLEC.layerMeanCorrection", "off", "fv"),
-            ("SIMPLEC.accelerationRestart", "off", "fv")) + PREVIOUS_SOLVES
-# (restarts off: with exact inner solves they cost iterations)
-REFERENCE = (("SIMPLEC.accelerationRestart", "off", "fv"),
-             ("SIMPLEC.nOuterCorrectors", 3000, "fv"),
-             ("coupling.lambdaTolerance", 1e-9, "pp"),
-             ("coupling.lambdaToleranceBetweenRecords", 1e-9, "pp"),
-             ("coupling.particleSolveTolerance", 1e-14, "pp"),
-             ("solvers.p.tolerance", 1e-12, "fv"),
-             ("solvers.p.relTol", 0, "fv"),
-             ("solvers.U.tolerance", 1e-12, "fv"),
-             ("solvers.U.relTol", 0, "fv"))
+# outer iteration, no restarts
+PREVIOUS = ((("SIMPLEC.layerMeanCorrection", "off", "fv"),) + NO_RESTART
+            + PREVIOUS_SOLVES)
+# (no restarts: with exact inner solves they cost iterations)
+REFERENCE = NO_RESTART + (
+    ("SIMPLEC.nOuterCorrectors", 3000, "fv"),
+    ("coupling.lambdaTolerance", 1e-9, "pp"),
+    ("coupling.lambdaToleranceBetweenRecords", 1e-9, "pp"),
+    ("coupling.particleSolveTolerance", 1e-14, "pp"),
+    ("solvers.p.tolerance", 1e-12, "fv"),
+    ("solvers.p.relTol", 0, "fv"),
+    ("solvers.U.tolerance", 1e-12, "fv"),
+    ("solvers.U.relTol", 0, "fv"))
 GAMG_U = (("solvers.U", "{solver GAMG; smoother GaussSeidel; "
            "tolerance 1e-7; relTol 0.1;}", "fv"),)
 # Each setting: the dictionary entries it changes from the case's own
@@ -122,13 +125,14 @@ SETTINGS.update(
     for n in (10, 25))
 # GAMG for U as a part (layerMean+relaxU0.99+gamg)
 SETTINGS["gamg"] = GAMG_U
-# The written steps' pressure to relTol 0.01 with one correction per outer
-# iteration and U as loose as between records (part tightP): inexact
-# pressures make the outer iteration's map noisy and the Anderson
-# extrapolation stall
-# The Anderson history dropped when the residual grows (part restart)
+# The Anderson history dropped when the residual grows, or kept (parts
+# restart, noRestart)
 SETTINGS["restart"] = (("SIMPLEC.accelerationRestart", "on", "fv"),)
-SETTINGS["noRestart"] = (("SIMPLEC.accelerationRestart", "off", "fv"),)
+SETTINGS["noRestart"] = NO_RESTART
+# The written steps' pressure to relTol 0.01 with one correction per outer
+# iteration and U as loose as between records, with restarts (part
+# tightP): inexact pressures make the outer iteration's map noisy and the
+# Anderson extrapolation stall
 SETTINGS["tightP"] = (("solvers.p.relTol", 0.01, "fv"),
                       ("solvers.U.relTol", 0.3, "fv"),
                       ("SIMPLEC.nCorrectors", 1, "fv")) + SETTINGS["restart"]

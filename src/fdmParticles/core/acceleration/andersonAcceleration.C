@@ -147,9 +147,13 @@ void Foam::fdm::andersonAcceleration::update
     }
 
     // Partial sums of the new Gram row dF_{m-1} . dF_j, of the right-hand
-    // side dF_i . f and of f . f, summed over processors in one reduction
+    // side dF_i . f and (restarts only) of f . f, summed over processors
+    // in one reduction
     List<scalar> dots(2*m + 1, Zero);
-    dots[2*m] = localDot(f, f);
+    if (restartOnGrowth_)
+    {
+        dots[2*m] = localDot(f, f);
+    }
     for (label i = 0; i < m; ++i)
     {
         if (appended)
