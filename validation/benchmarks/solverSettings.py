@@ -18,18 +18,28 @@ sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
 from fdmPost.caseRunner import (foam_get, foam_set, in_case,  # noqa: E402
                                 run_logged)
 
-FILES = {"fv": "system/fvSolution", "pp": "constant/particleProperties"}
+FILES = {"fv": "system/fvSolution", "pp": "constant/particleProperties",
+         "sc": "system/fvSchemes"}
 # The inner solves, the lambda residual of every step and the coupling of
 # the Couette tutorial until issue 30 (a snapshot cloned from the tutorial
 # since has looser steps between records, consistent overlaps and half
 # the lambda step)
-PREVIOUS_SOLVES = (("SIMPLEC.nCorrectors", 2, "fv"),
-                   ("solvers.p.relTol", 0.05, "fv"),
-                   ("solvers.U.relTol", 0.1, "fv"),
-                   ("coupling.lambdaTolerance", 1e-3, "pp"),
-                   ("coupling.lambdaToleranceBetweenRecords", 1e-3, "pp"),
-                   ("coupling.overlaps", "thesis", "pp"),
-                   ("coupling.alphaLambdaFactor", 1, "pp"))
+# Laplacians and face-normal gradients with the explicit non-orthogonal
+# correction (zero on these Cartesian meshes, yet computed: a gradient of
+# each component per assembly), or without it
+CORRECTED = (("laplacianSchemes.default", "Gauss linear corrected", "sc"),
+             ("snGradSchemes.default", "corrected", "sc"))
+UNCORRECTED = (("laplacianSchemes.default", "Gauss linear uncorrected",
+                "sc"),
+               ("snGradSchemes.default", "uncorrected", "sc"))
+PREVIOUS_SOLVES = CORRECTED + (
+    ("SIMPLEC.nCorrectors", 2, "fv"),
+    ("solvers.p.relTol", 0.05, "fv"),
+    ("solvers.U.relTol", 0.1, "fv"),
+    ("coupling.lambdaTolerance", 1e-3, "pp"),
+    ("coupling.lambdaToleranceBetweenRecords", 1e-3, "pp"),
+    ("coupling.overlaps", "thesis", "pp"),
+    ("coupling.alphaLambdaFactor", 1, "pp"))
 # The Anderson history kept when the residual grows (SIMPLEC
 # accelerationRestart off)
 NO_RESTART = (("SIMPLEC.accelerationRestart", "off", "fv"),)
@@ -102,7 +112,11 @@ SETTINGS.update(
     ("betweenRecords%s" % t, (
         ("coupling.lambdaToleranceBetweenRecords", t, "pp"),
         ("output.timeSeriesInterval", 5, "pp")))
-    for t in ("3e-3", "6.4e-3", "1e-2", "1.28e-2", "2e-2", "3e-2", "4e-2"))
+    for t in ("1e-3", "3e-3", "6.4e-3", "1e-2", "1.28e-2", "2e-2", "3e-2",
+              "4e-2", "1e-1"))
+# The Laplacians without the non-orthogonal correction as a part
+# (TUTORIAL+uncorrected)
+SETTINGS["uncorrected"] = UNCORRECTED
 # Consistent overlapping supports as a part (reference+consistent)
 SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 # The Rhie-Chow coefficient of the converged face flux in units of 1/a_C as
