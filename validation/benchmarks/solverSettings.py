@@ -33,6 +33,7 @@ UNCORRECTED = (("laplacianSchemes.default", "Gauss linear uncorrected",
                 "sc"),
                ("snGradSchemes.default", "uncorrected", "sc"))
 PREVIOUS_SOLVES = CORRECTED + (
+    ("SIMPLEC.momentumPredictor", "on", "fv"),
     ("SIMPLEC.nCorrectors", 2, "fv"),
     ("solvers.p.relTol", 0.05, "fv"),
     ("solvers.U.relTol", 0.1, "fv"),
@@ -117,6 +118,10 @@ SETTINGS.update(
 # The Laplacians without the non-orthogonal correction as a part
 # (TUTORIAL+uncorrected)
 SETTINGS["uncorrected"] = UNCORRECTED
+# The pressure corrections started from U as it is, without the momentum
+# solve (part noPredictor), or after it (part predictor)
+SETTINGS["noPredictor"] = (("SIMPLEC.momentumPredictor", "off", "fv"),)
+SETTINGS["predictor"] = (("SIMPLEC.momentumPredictor", "on", "fv"),)
 # Consistent overlapping supports as a part (reference+consistent)
 SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 # The Rhie-Chow coefficient of the converged face flux in units of 1/a_C as

@@ -20,6 +20,7 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
     algorithmName_(algorithmName),
     nCorrectors_(2),
     nCorrectorsBetweenRecords_(2),
+    momentumPredictor_(true),
     nOuterCorrectors_(1),
     outerTolerance_(0),
     accelerationDepth_(0),
@@ -188,9 +189,12 @@ bool Foam::fdmOuterLoopControl::loop()
             Info<< ", lambda residual " << lambdaResidual_
                 << ", particle solve " << particleIterations_ << " its";
         }
-        Info<< ", relative change U " << changeU_
-            << " (initial residuals U " << residualU_
-            << ", p " << residualp_ << ")" << endl;
+        Info<< ", relative change U " << changeU_ << " (initial residuals ";
+        if (momentumPredictor_)
+        {
+            Info<< "U " << residualU_ << ", ";
+        }
+        Info<< "p " << residualp_ << ")" << endl;
     }
 
     if (iteration_ > 0 && converged())

@@ -51,7 +51,7 @@ void Foam::fdmOuterLoopControl::read()
     (
         d,
         {
-            "nCorrectors", "nCorrectorsBetweenRecords",
+            "nCorrectors", "nCorrectorsBetweenRecords", "momentumPredictor",
             "nOuterCorrectors", "outerTolerance",
             "pRefCell", "pRefValue", "pRefPoint", "acceleration",
             "accelerationDepth", "accelerationRestart",
@@ -66,6 +66,7 @@ void Foam::fdmOuterLoopControl::read()
     (
         d, "nCorrectorsBetweenRecords", nCorrectors_, " (default: nCorrectors)"
     );
+    momentumPredictor_ = d.getOrDefault<bool>("momentumPredictor", true);
     nOuterCorrectors_ = readCount(d, "nOuterCorrectors", -1, "");
 
     outerTolerance_ = d.get<scalar>("outerTolerance");
