@@ -12,17 +12,52 @@
 namespace
 {
 
-//- This processor's part of a . b, without a temporary field
-Foam::scalar localDot(const Foam::scalarField& a, const Foam::scalarField& b)
+//- This processor's parts of the new Gram row dF_last . dF_i (gramRow),
+//  of dF_i . f and (withNorm) of f . f, in one pass over the history in
+//  blocks that stay in cache: each stored difference is read from memory
+//  once instead of twice (the update is bound by memory traffic)
+void localDots
+(
+    const Foam::UList<Foam::scalarField>& dF,
+    const Foam::scalarField& f,
+    const bool gramRow,
+    const bool withNorm,
+    Foam::List<Foam::scalar>& dots
+)
 {
-    const Foam::scalar* __restrict__ pa = a.cdata();
-    const Foam::scalar* __restrict__ pb = b.cdata();
-    Foam::scalar s = 0;
-    for (Foam::label k = 0; k < a.size(); ++k)
+    const Foam::label m = dF.size();
+    const Foam::label n = f.size();
+    const Foam::label block = 1024;
+    const Foam::scalar* __restrict__ pf = f.cdata();
+    const Foam::scalar* __restrict__ pl = dF[m - 1].cdata();
+    for (Foam::label k0 = 0; k0 < n; k0 += block)
     {
-        s += pa[k]*pb[k];
+        const Foam::label k1 = Foam::min(k0 + block, n);
+        for (Foam::label i = 0; i < m; ++i)
+        {
+            const Foam::scalar* __restrict__ pd = dF[i].cdata();
+            Foam::scalar row = 0, rhs = 0;
+            for (Foam::label k = k0; k < k1; ++k)
+            {
+                row += pl[k]*pd[k];
+                rhs += pd[k]*pf[k];
+            }
+            if (gramRow)
+            {
+                dots[i] += row;
+            }
+            dots[m + i] += rhs;
+        }
+        if (withNorm)
+        {
+            Foam::scalar norm = 0;
+            for (Foam::label k = k0; k < k1; ++k)
+            {
+                norm += pf[k]*pf[k];
+            }
+            dots[2*m] += norm;
+        }
     }
-    return s;
 }
 
 } // End anonymous namespace
@@ -150,18 +185,7 @@ void Foam::fdm::andersonAcceleration::update
     // side dF_i . f and (restarts only) of f . f, summed over processors
     // in one reduction
     List<scalar> dots(2*m + 1, Zero);
-    if (restartOnGrowth_)
-    {
-        dots[2*m] = localDot(f, f);
-    }
-    for (label i = 0; i < m; ++i)
-    {
-        if (appended)
-        {
-            dots[i] = localDot(dF_[m - 1], dF_[i]);
-        }
-        dots[m + i] = localDot(dF_[i], f);
-    }
+    localDots(dF_, f, appended, restartOnGrowth_, dots);
     reduce_(dots);
     if (restartIfGrown(dots[2*m]))
     {
