@@ -20,10 +20,6 @@ from fdmPost.caseRunner import (foam_get, foam_set, in_case,  # noqa: E402
 
 FILES = {"fv": "system/fvSolution", "pp": "constant/particleProperties",
          "sc": "system/fvSchemes"}
-# The inner solves, the lambda residual of every step and the coupling of
-# the Couette tutorial until issue 30 (a snapshot cloned from the tutorial
-# since has looser steps between records, consistent overlaps and half
-# the lambda step)
 # Laplacians and face-normal gradients with the explicit non-orthogonal
 # correction (zero on these Cartesian meshes, yet computed: a gradient of
 # each component per assembly), or without it
@@ -32,6 +28,10 @@ CORRECTED = (("laplacianSchemes.default", "Gauss linear corrected", "sc"),
 UNCORRECTED = (("laplacianSchemes.default", "Gauss linear uncorrected",
                 "sc"),
                ("snGradSchemes.default", "uncorrected", "sc"))
+# The inner solves, the lambda residual of every step and the coupling of
+# the Couette tutorial until issue 30 (a snapshot cloned from the tutorial
+# since has looser steps between records, consistent overlaps, half the
+# lambda step and uncorrected Laplacians)
 PREVIOUS_SOLVES = CORRECTED + (
     ("SIMPLEC.momentumPredictor", "on", "fv"),
     ("SIMPLEC.nCorrectors", 2, "fv"),
