@@ -119,9 +119,8 @@ SETTINGS.update(
 # (TUTORIAL+uncorrected)
 SETTINGS["uncorrected"] = UNCORRECTED
 # The pressure corrections started from U as it is, without the momentum
-# solve (part noPredictor), or after it (part predictor)
+# solve (part noPredictor)
 SETTINGS["noPredictor"] = (("SIMPLEC.momentumPredictor", "off", "fv"),)
-SETTINGS["predictor"] = (("SIMPLEC.momentumPredictor", "on", "fv"),)
 # Consistent overlapping supports as a part (reference+consistent)
 SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 # The Rhie-Chow coefficient of the converged face flux in units of 1/a_C as
