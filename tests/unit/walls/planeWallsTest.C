@@ -14,31 +14,12 @@ using namespace Foam;
 namespace
 {
 
-const wordList couetteSides
-    ({"cyclic", "cyclic", "wall", "wall", "cyclic", "cyclic"});
-
 //- U with the given values on the two y walls (x component varying along
 //  x on the upper one, so that only the area average gives its mean)
 tmp<volVectorField> wallVelocity(const fvMesh& mesh)
 {
-    wordList types(mesh.boundary().size(), "calculated");
-    forAll(types, patchi)
-    {
-        if (mesh.boundary()[patchi].coupled())
-        {
-            types[patchi] = "cyclic";
-        }
-    }
-    tmp<volVectorField> tU
-    (
-        new volVectorField
-        (
-            IOobject("U", mesh.time().timeName(), mesh),
-            mesh,
-            dimensionedVector(dimVelocity, Zero),
-            types
-        )
-    );
+    tmp<volVectorField> tU =
+        unitTest::zeroField<vector>(mesh, "U", dimVelocity);
     auto& Ub = tU.ref().boundaryFieldRef();
     Ub[mesh.boundaryMesh().findPatchID("yMin")] == vector(-1, 0, 0);
     fvPatchVectorField& top = Ub[mesh.boundaryMesh().findPatchID("yMax")];
@@ -58,7 +39,10 @@ TEST(planeWalls, couetteWallsNormalsDistancesAndShearRate)
 {
     unitTest::scratchCase sc("planeWalls");
     autoPtr<fvMesh> mesh =
-        unitTest::boxMesh(sc.runTime(), labelVector(4, 6, 4), 0.25, couetteSides);
+        unitTest::boxMesh
+        (
+            sc.runTime(), labelVector(4, 6, 4), 0.25, unitTest::channelSides()
+        );
     tmp<volVectorField> U = wallVelocity(*mesh);
 
     const planeWalls walls(*mesh, "test");

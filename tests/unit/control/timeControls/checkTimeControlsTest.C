@@ -35,8 +35,10 @@ TEST(checkTimeControls, refusesAStepThatIsNotPositiveAndFinite)
 {
     for (const char* dt : {"0", "-0.1"})
     {
-        const std::string msg =
-            errorFor(std::string("startTime 0; endTime 1; deltaT ") + dt + ";");
+        const std::string msg = errorFor
+        (
+            std::string("startTime 0; endTime 1; deltaT ") + dt + ";"
+        );
         EXPECT_NE(msg.find("deltaT"), std::string::npos) << dt << ": " << msg;
         EXPECT_NE(msg.find("finite numbers > 0"), std::string::npos) << msg;
     }
