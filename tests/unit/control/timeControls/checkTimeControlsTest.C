@@ -1,6 +1,7 @@
 // Unit test of checkTimeControls and lastStepOfRun on the Time of a scratch
-// case: deltaT must be finite and > 0, endTime not before the start; the
-// last step is the one within half a step of endTime.
+// case: deltaT must be > 0, endTime not before the start; the last step is
+// the one within half a step of endTime.  (An overflowing deltaT, 1e400,
+// never reaches the check: OpenFOAM's dictionary reader refuses it.)
 
 #include "checkTimeControls.H"
 #include "unitTestCase.H"
@@ -42,10 +43,6 @@ TEST(checkTimeControls, refusesAStepThatIsNotPositiveAndFinite)
         EXPECT_NE(msg.find("deltaT"), std::string::npos) << dt << ": " << msg;
         EXPECT_NE(msg.find("finite numbers > 0"), std::string::npos) << msg;
     }
-    // An overflowing number is refused by the dictionary reader already,
-    // which names the keyword too
-    const std::string msg = errorFor("startTime 0; endTime 1; deltaT 1e400;");
-    EXPECT_NE(msg.find("deltaT"), std::string::npos) << msg;
 }
 
 
