@@ -91,6 +91,7 @@ TEST(secondOrderWallVelocity, poiseuilleSolutionIsTheExactParabola)
 {
     // nu u'' = -2 nu: the parabola above with nu = 1
     SolverPerformance<scalar>::debug = 0;
+    SolverPerformance<vector>::debug = 0;
     for (const word type : {"secondOrderWallVelocity", "fixedValue"})
     {
         channel ch("secondOrderWallVelocitySolve", type);
