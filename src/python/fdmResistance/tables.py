@@ -5,12 +5,17 @@ src/fdmParticles/subGrid/resistanceTable:
     f(x) = g1/x + g2 ln(1/x) + g3 x ln(1/x) + remainder(x)
 
 with the remainder linearly interpolated on the gap grid (constant
-outside it), zero above a function's cut-off when it has one.
+outside it), zero above a function's cut-off when it has one, and x floored
+at X_MIN as the C++ does (thesis 1e-5; tests/golden/resistanceTables.dat
+holds the C++ values this reader is tested against).
 """
 
 import re
 
 import numpy as np
+
+# The gap floor of resistanceTable (defaultXMin)
+X_MIN = 1e-5
 
 
 def read_table(path):
@@ -41,10 +46,10 @@ def read_table(path):
     return meta, gap, functions
 
 
-def evaluate(function, gap, x):
+def evaluate(function, gap, x, x_min=X_MIN):
     """Value of one function (an entry of read_table's functions) at the
-    gaps x (array), cut-off applied."""
-    x = np.atleast_1d(np.asarray(x, float))
+    gaps x (array), floored at x_min, cut-off applied."""
+    x = np.maximum(np.atleast_1d(np.asarray(x, float)), x_min)
     g1, g2, g3 = function["singular"]
     lx = np.log(1.0 / x)
     f = g1 / x + g2 * lx + g3 * x * lx + np.interp(x, gap,

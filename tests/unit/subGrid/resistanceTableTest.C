@@ -9,6 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <vector>
 #include <sstream>
 #include <string>
 
@@ -275,4 +278,97 @@ TEST(resistanceTable, rejectsMalformedTables)
 
     FatalIOError.dontThrowExceptions();
     FatalError.dontThrowExceptions();
+}
+
+
+namespace
+{
+
+// Golden table of the shipped a/5 sub-grid tables as resistanceTable
+// evaluates them, rows (table, function, gap, value at a1 = 1); the Python
+// twin (fdmResistance.tables.evaluate) is tested on it too
+std::string projectFile(const std::string& rel)
+{
+    const char* root = std::getenv("FDM_PROJECT_DIR");
+    return std::string(root ? root : ".") + "/" + rel;
+}
+
+struct goldenRow
+{
+    std::string table;
+    std::string function;
+    double gap;
+    double value;
+};
+
+std::vector<goldenRow> shippedTableRows()
+{
+    std::vector<goldenRow> rows;
+    for (const char* name : {"subGridPair_lambda1", "subGridPair_lambda1.4",
+        "subGridWall"})
+    {
+        const table t = table::read
+        (
+            projectFile(std::string("data/resistance/") + name)
+        );
+        const wordList& functions =
+            t.isPair() ? table::pairFunctionNames : table::wallFunctionNames;
+        // On and between grid points, near contact, past cut-offs and the
+        // end of the grid
+        for (const word& f : functions)
+        for (const double x : {1e-6, 3.3e-5, 1e-3, 0.0123, 0.05, 0.149, 0.2,
+            0.31, 0.45, 0.7})
+        {
+            rows.push_back({name, f, x, t.value(f, x, 1)});
+        }
+    }
+    return rows;
+}
+
+} // namespace
+
+
+TEST(resistanceTable, shippedTablesMatchTheGoldenTable)
+{
+    // FDM_WRITE_GOLDEN=1 fdmUnitTests rewrites the golden table after a
+    // deliberate change of the tables or of their evaluation (the Python
+    // reader must follow)
+    const std::string golden = projectFile("tests/golden/resistanceTables.dat");
+    const std::vector<goldenRow> rows(shippedTableRows());
+    if (std::getenv("FDM_WRITE_GOLDEN"))
+    {
+        std::ofstream os(golden);
+        os.precision(17);
+        os  << "# The shipped sub-grid tables (data/resistance) as"
+            << " resistanceTable evaluates them,\n# f = g1/x + g2 ln(1/x) +"
+            << " g3 x ln(1/x) + remainder(x), zero past the cut-off (a1 = 1)"
+            << "\n# written by tests/unit/subGrid/resistanceTableTest.C"
+            << " (FDM_WRITE_GOLDEN=1)\n# table function gap value\n";
+        for (const goldenRow& r : rows)
+        {
+            os  << r.table << ' ' << r.function << ' ' << r.gap << ' '
+                << r.value << '\n';
+        }
+    }
+    std::ifstream is(golden);
+    ASSERT_TRUE(is.good()) << golden;
+    std::string line;
+    std::size_t i = 0;
+    while (std::getline(is, line))
+    {
+        if (line.empty() || line[0] == '#')
+        {
+            continue;
+        }
+        std::istringstream ls(line);
+        goldenRow g;
+        ls >> g.table >> g.function >> g.gap >> g.value;
+        ASSERT_LT(i, rows.size());
+        EXPECT_EQ(g.table + g.function, rows[i].table + rows[i].function);
+        EXPECT_EQ(g.gap, rows[i].gap) << "row " << i;
+        EXPECT_NEAR(rows[i].value, g.value, 1e-13*std::abs(g.value))
+            << "row " << i << ": " << g.table << ' ' << g.function;
+        ++i;
+    }
+    EXPECT_EQ(i, rows.size());
 }
