@@ -29,6 +29,53 @@ class SlabVolume(unittest.TestCase):
                                    for i in range(6)), 4 / 3 * np.pi * a**3, 12)
 
 
+class GoldenTable(unittest.TestCase):
+    """The channel averages as the C++ (fdm::channelAverages, behind the
+    suspensionStress function object) computes them for the sample stored
+    in tests/golden/channelAverages.dat (written by
+    tests/unit/rheology/channelAveragesTest.C): the same values here."""
+
+    def test_matches_the_cpp_golden_table(self):
+        path = os.path.join(os.path.dirname(__file__), "..", "..", "..",
+                            "tests", "golden", "channelAverages.dat")
+        particles, rows = [], {}
+        with open(path) as f:
+            lines = [x for x in f if x.strip() and not x.startswith("#")]
+        for line in lines:
+            words = line.split()
+            if words[0] == "particle":
+                particles.append([float(w) for w in words[1:]])
+            else:
+                rows[words[0]] = np.array([float(w) for w in words[1:]])
+        p = np.array(particles)
+        self.assertEqual(p.shape, (16, 19))
+        data = dict(time=np.zeros(1), position=p[None, :, 0:3],
+                    velocity=p[None, :, 3:6], radius=p[:, 6],
+                    stresslet=p[None, :, 7:13],
+                    dipoleTrace=np.zeros((1, len(p))),
+                    contactStresslet=p[None, :, 13:19])
+        cs = CouetteSeries(data, lo=(0, 0, 0), span=(10, 10, 10), eta=1.0,
+                           layer=2.0)
+        six = [(0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2)]
+
+        def close(name, values):
+            np.testing.assert_allclose(values, rows[name], rtol=1e-13,
+                                       atol=1e-13, err_msg=name)
+
+        close("corePhi", [cs.core_volume_fraction(0)])
+        close("coreShearRate", [cs.core_shear_rate(0)])
+        hp, c = cs.core_stresses(0)
+        close("coreHydrodynamic", [hp[i, j] for i, j in six])
+        close("coreContact", [c[i, j] for i, j in six])
+        _, phi, up = cs.profiles(5, [0])
+        close("binPhi", phi)
+        close("binVelocityFlow", up)
+        hp, c = cs.stress_profiles(5, [0])
+        bins = [(b, i, j) for b in range(5) for i, j in six]
+        close("binHydrodynamic", [hp[k] for k in bins])
+        close("binContact", [c[k] for k in bins])
+
+
 class Couette(unittest.TestCase):
     def make(self):
         # 4 spheres on a linear velocity profile u = 0.8 y; stresslets

@@ -302,8 +302,9 @@ class TestTables(unittest.TestCase):
         # same values from this reader to 1e-13 relative (1e-13 absolute
         # where the terms cancel, at values of 1e-2 from terms of 10)
         golden = os.path.join(ROOT, "tests", "golden", "resistanceTables.dat")
-        rows = [line.split() for line in open(golden)
-                if line.strip() and not line.startswith("#")]
+        with open(golden) as f:
+            rows = [line.split() for line in f
+                    if line.strip() and not line.startswith("#")]
         self.assertEqual(len(rows), 270)
         tables = {}
         for name, function, x, value in rows:

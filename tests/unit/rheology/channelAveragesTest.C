@@ -8,7 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <fstream>
 #include <random>
+#include <sstream>
+#include <string>
+#include <vector>
 
 using namespace Foam;
 
@@ -200,4 +205,123 @@ TEST(channelAverages, rejectsBadDirectionsAndLayers)
                  Foam::error);
     const fdm::channelAverages avg(point(0, 0, 0), vector(1, 1, 1), 1, 0, 4);
     EXPECT_THROW(avg.averages(fdm::particleSample(), 0.5), Foam::error);
+}
+
+
+namespace
+{
+
+// Golden table of the channel averages, the sample included; the Python
+// twin (fdmPost.rheology.CouetteSeries) is tested on it too.  Cell [0, 10]^3,
+// walls normal to y, flow along x, 5 bins, wall layer 2.
+std::string goldenChannelTable()
+{
+    const char* root = std::getenv("FDM_PROJECT_DIR");
+    return std::string(root ? root : ".") + "/tests/golden/channelAverages.dat";
+}
+
+//- Rows "name index value" of the averages of sample s
+std::vector<std::pair<std::string, std::vector<double>>> channelRows
+(
+    const fdm::particleSample& s
+)
+{
+    const fdm::channelAverages avg
+    (
+        point::zero, vector(10, 10, 10), 1, 0, 5
+    );
+    const fdm::channelAverages::region core = avg.averages(s, 2);
+    const fdm::channelAverages::profiles p = avg.binned(s);
+    std::vector<std::pair<std::string, std::vector<double>>> rows;
+    rows.push_back({"corePhi", {core.volumeFraction}});
+    rows.push_back({"coreShearRate", {core.shearRate}});
+    rows.push_back({"coreHydrodynamic", {}});
+    rows.push_back({"coreContact", {}});
+    for (direction c = 0; c < 6; ++c)
+    {
+        rows[2].second.push_back(core.hydrodynamic[c]);
+        rows[3].second.push_back(core.contact[c]);
+    }
+    rows.push_back({"binPhi", {}});
+    rows.push_back({"binVelocityFlow", {}});
+    rows.push_back({"binHydrodynamic", {}});
+    rows.push_back({"binContact", {}});
+    forAll(p.y, b)
+    {
+        rows[4].second.push_back(p.volumeFraction[b]);
+        rows[5].second.push_back(p.velocity[b].x());
+        for (direction c = 0; c < 6; ++c)
+        {
+            rows[6].second.push_back(p.hydrodynamic[b][c]);
+            rows[7].second.push_back(p.contact[b][c]);
+        }
+    }
+    return rows;
+}
+
+} // namespace
+
+
+TEST(channelAverages, matchesTheGoldenTable)
+{
+    // FDM_WRITE_GOLDEN=1 fdmUnitTests rewrites the table (sample and
+    // averages) after a deliberate change of eqs 2.70-2.76, 6.4-6.5,
+    // 6.18-6.19 (and the Python twin must follow)
+    const fdm::particleSample s = randomSample(16, 10, 11);
+    const auto rows = channelRows(s);
+    if (std::getenv("FDM_WRITE_GOLDEN"))
+    {
+        std::ofstream os(goldenChannelTable());
+        os.precision(17);
+        os  << "# Channel averages (thesis 1 eqs 2.70-2.76, 6.4-6.5,"
+            << " 6.18-6.19) of a sample of 16 spheres in [0, 10]^3, walls"
+            << " normal to y,\n# flow x, 5 bins, wall layer 2; written by"
+            << " tests/unit/rheology/channelAveragesTest.C"
+            << " (FDM_WRITE_GOLDEN=1)\n"
+            << "# particle: x y z ux uy uz a hydrodynamic(6) contact(6)\n";
+        forAll(s.radius, i)
+        {
+            os  << "particle";
+            for (direction c = 0; c < 3; ++c) { os << ' ' << s.position[i][c]; }
+            for (direction c = 0; c < 3; ++c) { os << ' ' << s.velocity[i][c]; }
+            os  << ' ' << s.radius[i];
+            for (direction c = 0; c < 6; ++c)
+            {
+                os  << ' ' << s.hydrodynamic[i][c];
+            }
+            for (direction c = 0; c < 6; ++c) { os << ' ' << s.contact[i][c]; }
+            os  << '\n';
+        }
+        os  << "# name values (tensors xx xy xz yy yz zz, bins in order)\n";
+        for (const auto& r : rows)
+        {
+            os  << r.first;
+            for (const double v : r.second) { os << ' ' << v; }
+            os  << '\n';
+        }
+    }
+    std::ifstream is(goldenChannelTable());
+    ASSERT_TRUE(is.good()) << goldenChannelTable();
+    std::string line;
+    std::size_t i = 0;
+    while (std::getline(is, line))
+    {
+        if (line.empty() || line[0] == '#' || line.rfind("particle", 0) == 0)
+        {
+            continue;
+        }
+        std::istringstream ls(line);
+        std::string name;
+        ls >> name;
+        ASSERT_LT(i, rows.size());
+        EXPECT_EQ(name, rows[i].first);
+        for (const double v : rows[i].second)
+        {
+            double g;
+            ls >> g;
+            EXPECT_NEAR(v, g, 1e-13*(std::abs(g) + 1)) << name;
+        }
+        ++i;
+    }
+    EXPECT_EQ(i, rows.size());
 }
