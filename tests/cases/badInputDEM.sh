@@ -54,6 +54,8 @@ expectFatal hugeNumber $list "${row1}(suspended (1e400 1 1) \2)/" \
     particleList "could not get scalar value"
 expectFatal outsideOpenCell $pp 's/shearRate   1;/&\n    open (y);/' \
     particleList "not inside the domain" "along direction y"
+expectFatal hugeTimeStep system/controlDict 's/^deltaT .*/deltaT 1e400;/' \
+    controlDict "starting at keyword 'deltaT'"
 expectFatal zeroTimeStep system/controlDict 's/^deltaT .*/deltaT 0;/' \
     controlDict "deltaT"
 expectFatal negativeEnd system/controlDict 's/^endTime .*/endTime -1;/' \

@@ -8,7 +8,8 @@
 #   3. a damaged particles.h5 is moved aside, the run starts
 #   4. a diverging outer iteration stops with a message, exit status not 0,
 #      nothing of the step written
-#   5. physical input: deltaT 0 and < 0, endTime before the start, a
+#   5. physical input: deltaT 0, < 0 and 1e400, nu 1e400 (a clear error
+#      under FOAM_SIGFPE, not a trap), endTime before the start, a
 #      non-finite position, an empty list, a wrong count, changed radii on
 #      restart
 # Checks in checkDataSafety.py.
@@ -120,6 +121,10 @@ expectStopIn negativeDeltaT "allowed values are finite numbers > 0" \
     foamDictionary -entry deltaT -set -0.05 system/controlDict
 expectStopIn endBeforeStart "is before the start time" \
     foamDictionary -entry endTime -set -1 system/controlDict
+expectStopIn hugeDeltaT "starting at keyword 'deltaT'" \
+    "sed -i 's/^deltaT .*/deltaT 1e400;/' system/controlDict"
+expectStopIn hugeViscosity "starting at keyword 'nu'" \
+    "sed -i 's/^nu .*/nu 1e400;/' constant/transportProperties"
 expectStopIn hugePosition "ill defined primitiveEntry starting at keyword 'particles'" \
     "sed -i 's/( 1.55 0.52 1.47 )/( 1e400 0.52 1.47 )/' constant/particleProperties"
 expectStopIn emptyList "is empty" \

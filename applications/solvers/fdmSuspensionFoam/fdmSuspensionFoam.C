@@ -48,6 +48,7 @@ Usage
 #include "checkKeywords.H"
 #include "checkTimeControls.H"
 #include "incompleteWrites.H"
+#include "readableDictionaries.H"
 #include "layerMeanCorrection.H"
 #include "planeWalls.H"
 #include <iomanip>
@@ -74,6 +75,7 @@ int main(int argc, char *argv[])
 
     #include "addCheckCaseOptions.H"
     #include "setRootCaseLists.H"
+    fdm::checkDictionariesReadable(args.rootPath()/args.globalCaseName());
     fdm::setAsideIncompleteWrites(args);
     #include "createTime.H"
     fdm::checkTimeControls(runTime);

@@ -87,6 +87,7 @@ Description
 #include "demMonitor.H"
 #include "checkTimeControls.H"
 #include "incompleteWrites.H"
+#include "readableDictionaries.H"
 
 using namespace Foam;
 
@@ -99,6 +100,7 @@ int main(int argc, char *argv[])
     );
     argList::noParallel();
     #include "setRootCase.H"
+    fdm::checkDictionariesReadable(args.rootPath()/args.globalCaseName());
     // A time whose particleState a killed run did not finish is set aside
     fdm::setAsideIncompleteWrites(args, wordList());
     #include "createTime.H"

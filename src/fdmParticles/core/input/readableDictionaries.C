@@ -1,0 +1,58 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "readableDictionaries.H"
+#include "fpTrapsOff.H"
+#include "IFstream.H"
+#include "OSspecific.H"
+#include "dictionary.H"
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
+
+const Foam::wordList& Foam::fdm::dictionariesReadAtStart()
+{
+    static const wordList files
+    ({
+        "system/controlDict", "system/fvSchemes", "system/fvSolution",
+        "system/decomposeParDict", "constant/transportProperties",
+        "constant/flowProperties"
+    });
+    return files;
+}
+
+
+void Foam::fdm::checkDictionariesReadable(const fileName& caseDir)
+{
+    fpTrapsOff trapsOff;
+    for (const word& rel : dictionariesReadAtStart())
+    {
+        const fileName file = caseDir/rel;
+        if (!isFile(file))
+        {
+            continue;
+        }
+        IFstream is(file);
+        const bool throwing = FatalIOError.throwing();
+        FatalIOError.throwExceptions();
+        try
+        {
+            const dictionary dict(is);
+        }
+        catch (const IOerror& e)
+        {
+            FatalIOError.throwExceptions(throwing);
+            trapsOff.restore();
+            FatalIOErrorInFunction(is)
+                << "Cannot read " << file << ": " << e.message().c_str()
+                << nl << "    Numbers must be finite doubles (magnitude"
+                << " below about 1.8e308); check the entry named above"
+                << exit(FatalIOError);
+        }
+        FatalIOError.throwExceptions(throwing);
+    }
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,51 @@
+// Unit test of the check before createTime: a number beyond the range of a
+// double in a dictionary OpenFOAM reads next stops naming the file, the
+// keyword and what is allowed, with floating-point traps on (where
+// OpenFOAM's reader alone would trap); whole dictionaries pass, absent
+// ones are skipped.
+
+#include "readableDictionaries.H"
+#include "sigFpe.H"
+#include "unitTestCase.H"
+#include "unitTestHelpers.H"
+#include <gtest/gtest.h>
+
+using namespace Foam;
+
+TEST(readableDictionaries, hugeNumberStopsNamingFileAndKeywordWithTrapsOn)
+{
+    unitTest::scratchCase sc("readableDictionaries");
+    sc.writeFile("constant/transportProperties", "nu 1; rho 1e400;");
+    const bool wasSet = sigFpe::requested();
+    setEnv("FOAM_SIGFPE", "true", true);
+    sigFpe::set();
+    const std::string msg = unitTest::errorOf([&]
+    {
+        fdm::checkDictionariesReadable(sc.path());
+    });
+    if (!wasSet)
+    {
+        sigFpe::unset();
+        setEnv("FOAM_SIGFPE", "false", true);
+    }
+    EXPECT_NE(msg.find("constant/transportProperties"), std::string::npos)
+        << msg;
+    EXPECT_NE(msg.find("keyword 'rho'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("finite doubles"), std::string::npos) << msg;
+}
+
+
+TEST(readableDictionaries, wholeOrAbsentDictionariesPass)
+{
+    unitTest::scratchCase sc("readableDictionariesWhole");
+    sc.writeFile
+    (
+        "constant/flowProperties", "meanPressureGradient (1e300 0 0);"
+    );
+    EXPECT_EQ
+    (
+        unitTest::errorOf([&]{ fdm::checkDictionariesReadable(sc.path()); }),
+        ""
+    );
+    EXPECT_EQ(fdm::dictionariesReadAtStart().size(), 6);
+}
