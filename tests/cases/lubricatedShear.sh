@@ -9,6 +9,8 @@
 #    zero (pairwise forces, checked to 1e-10 of the rms momentum);
 #  - output{track} writes the tracked particles' positions (last row equal
 #    to the final particleState to the 12 digits written);
+#  - particles.h5 (the FDM series format) holds a record per stress.dat
+#    row, the restarted run's series bitwise the straight run's;
 #  - a deltaT above the critical step min sqrt(m/k) stops before the run
 #    with a message naming system/controlDict and deltaT.
 source "${0%/*}/caseTestFunctions"
@@ -110,6 +112,27 @@ err = np.abs(tracks[-1, 1:] - np.concatenate([x[0], x[5]])).max()
 print("   tracks.dat: %d rows, last row against particleState %.1e"
       % (len(tracks), err))
 ok &= len(tracks) == len(d) and err < 1e-9 * np.abs(x).max()
+
+# particles.h5 (the FDM format): a record per stress.dat row; the restart
+# continues the first run's series, so both series are the same records
+import h5py
+series = {}
+for case in ("straight", "restarted"):
+    with h5py.File(os.path.join(work, case, "postProcessing",
+                                "particles.h5"), "r") as f:
+        series[case] = {k: f[k][...] for k in ("time", "position",
+                                               "contactForce")}
+a, b = series["straight"], series["restarted"]
+# The record times are OpenFOAM's accumulated times: 1e-4 steps summed from
+# 0 or from 0.25 differ in the last digits
+same = (all(a[k].shape == b[k].shape and np.array_equal(a[k], b[k])
+            for k in ("position", "contactForce"))
+        and np.allclose(a["time"], b["time"], rtol=0, atol=1e-12))
+last = np.array_equal(a["position"][-1], x)
+print("   particles.h5: %d records (stress.dat %d), restarted series bitwise"
+      " %s, last record at the final particleState %s"
+      % (len(a["time"]), len(d), same, last))
+ok &= len(a["time"]) == len(d) and same and last
 sys.exit(0 if ok else 1)
 PY
 

@@ -56,6 +56,7 @@ Description
     output
     {
         interval    100;            // steps between time-series rows
+                                    // and particles.h5 records
         track       (0 1);          // optional: write these particles'
                                     // positions to tracks.dat
         vtkInterval 0;              // optional: VTK files every n steps
@@ -67,7 +68,10 @@ Description
     strain, phi, interactions, contacts, stability number and the xx, yy,
     zz, xy stresses of the four parts NC, SC, NL, SL (compression < 0);
     with output{track}, tracks.dat: time and the positions of those
-    particles.  <time>/particleState also holds each particle's stresslets
+    particles.  postProcessing/particles.h5: the particle series in the
+    format of fdmSuspensionFoam's (fdm::demParticleSeries), a record per
+    stress.dat row, published at the write times.
+    <time>/particleState also holds each particle's stresslets
     of the four parts (stresslet_<part>), for local stress profiles.
     VTK/particles_<time>.vtp and contacts_<time>.vtp with their .series
     files open in ParaView (fdm::particleVTKWriter): the particles from the
@@ -83,6 +87,7 @@ Description
 #include "demSetup.H"
 #include "demState.H"
 #include "demSeries.H"
+#include "demParticleSeries.H"
 #include "demVTK.H"
 #include "demMonitor.H"
 #include "checkTimeControls.H"
@@ -120,6 +125,7 @@ int main(int argc, char *argv[])
     const label outputInterval = fdm::demSeries::readInterval(output);
     fdm::demTracks tracks(runTime, dem, output);
     fdm::demSeries series(runTime, dem);
+    fdm::demParticleSeries particleSeries(runTime);
     fdm::demVTK vtk(runTime, output);
     fdm::demMonitor monitor;
     vtk.write(dem, runTime, 0);
@@ -144,6 +150,7 @@ int main(int argc, char *argv[])
         if (stepCount % outputInterval == 0)
         {
             series.append(dem);
+            particleSeries.append(dem);
             tracks.append(dem);
         }
         // A progress line every 10 s of wall time and at the end
@@ -159,6 +166,7 @@ int main(int argc, char *argv[])
         if (runTime.writeTime() || last)
         {
             fdm::writeDEMState(dem, runTime);
+            particleSeries.commit();
         }
     }
 

@@ -173,6 +173,8 @@ Foam::label Foam::fdm::lubricatedDEM::addParticle
     displacementSinceSearch_.append(Zero);
     force_.append(Zero);
     torque_.append(Zero);
+    contactForce_.append(Zero);
+    contactTorque_.append(Zero);
     for (List<symmTensor>& s : stresslet_)
     {
         s.append(Zero);

@@ -26,6 +26,8 @@ Foam::fdm::lubricatedDEM::resetLoads()
     const label n = size();
     force_ = bodyForce_;
     torque_ = Zero;
+    contactForce_ = Zero;
+    contactTorque_ = Zero;
     for (List<symmTensor>& s : stresslet_)
     {
         s = Zero;
@@ -110,6 +112,11 @@ void Foam::fdm::lubricatedDEM::addPairLoads
     pairForce_[k] = F;
     torque_[i] += armI*(nij ^ Fs) + Tv;
     torque_[j] += armJ*(nij ^ Fs) - Tv;
+    const vector Fc = loads.normalContact*nij + loads.shearContact;
+    contactForce_[i] += Fc;
+    contactForce_[j] -= Fc;
+    contactTorque_[i] += armI*(nij ^ loads.shearContact);
+    contactTorque_[j] += armJ*(nij ^ loads.shearContact);
 
     addStresslets(loads, nij, armI, armJ, i, j);
     addToTotals(loads, nij, armI, armJ, i, j, totals);
