@@ -8,7 +8,7 @@
 #   3. a damaged particles.h5 is moved aside, the run starts
 #   4. a diverging outer iteration stops with a message, exit status not 0,
 #      nothing of the step written
-#   5. physical input: deltaT 0, < 0 and 1e400, nu 1e400 (a clear error
+#   5. physical input: deltaT 0, < 0 and 1e400, nu and U 1e400 (a clear error
 #      under FOAM_SIGFPE, not a trap), endTime before the start, a
 #      non-finite position, an empty list, a wrong count, changed radii on
 #      restart
@@ -125,6 +125,8 @@ expectStopIn hugeDeltaT "starting at keyword 'deltaT'" \
     "sed -i 's/^deltaT .*/deltaT 1e400;/' system/controlDict"
 expectStopIn hugeViscosity "starting at keyword 'nu'" \
     "sed -i 's/^nu .*/nu 1e400;/' constant/transportProperties"
+expectStopIn hugeVelocity "starting at keyword 'internalField'" \
+    "sed -i 's/^internalField .*/internalField uniform (1e400 0 0);/' 0/U"
 expectStopIn hugePosition "ill defined primitiveEntry starting at keyword 'particles'" \
     "sed -i 's/( 1.55 0.52 1.47 )/( 1e400 0.52 1.47 )/' constant/particleProperties"
 expectStopIn emptyList "is empty" \

@@ -79,6 +79,7 @@ int main(int argc, char *argv[])
     fdm::setAsideIncompleteWrites(args);
     #include "createTime.H"
     fdm::checkTimeControls(runTime);
+    fdm::checkDictionariesReadable(runTime.timePath(), {"U", "p", "lambda"});
     #include "createMesh.H"
     #include "createFields.H"
     #include "initContinuityErrs.H"

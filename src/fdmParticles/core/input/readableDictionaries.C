@@ -23,12 +23,16 @@ const Foam::wordList& Foam::fdm::dictionariesReadAtStart()
 }
 
 
-void Foam::fdm::checkDictionariesReadable(const fileName& caseDir)
+void Foam::fdm::checkDictionariesReadable
+(
+    const fileName& dir,
+    const wordList& files
+)
 {
     fpTrapsOff trapsOff;
-    for (const word& rel : dictionariesReadAtStart())
+    for (const word& rel : files)
     {
-        const fileName file = caseDir/rel;
+        const fileName file = dir/rel;
         if (!isFile(file))
         {
             continue;
