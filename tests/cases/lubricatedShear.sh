@@ -137,10 +137,11 @@ sys.exit(0 if ok else 1)
 PY
 
 # ParaView files of the DEM: the VTK series from t = 0, each particle once
-# at its particleState position, the interactions as lines
-echo "   VTK files:"
-out=$("$FDM_PYTHON" -m fdmPost.particleFiles "$work/straight" --no-hdf5); rc=$?
+# at its particleState position, the interactions as lines; particles.h5
+# with its units, run attributes, named groups and XDMF companion
+echo "   VTK and HDF5 files:"
+out=$("$FDM_PYTHON" -m fdmPost.particleFiles "$work/straight"); rc=$?
 echo "$out" | sed 's/^/   /'
 [ $rc -eq 0 ] && [ -f "$work/straight/VTK/particles_0.vtp" ] \
     && grep -q "contact lines" <<< "$out" \
-    && ! grep -q " 0 contact lines" <<< "$(echo "$out" | tail -n 1)"
+    && ! grep -q " 0 contact lines" <<< "$(grep "VTK:" <<< "$out" | tail -n 1)"

@@ -125,7 +125,7 @@ int main(int argc, char *argv[])
     const label outputInterval = fdm::demSeries::readInterval(output);
     fdm::demTracks tracks(runTime, dem, output);
     fdm::demSeries series(runTime, dem);
-    fdm::demParticleSeries particleSeries(runTime);
+    fdm::demParticleSeries particleSeries(runTime, properties);
     fdm::demVTK vtk(runTime, output);
     fdm::demMonitor monitor;
     vtk.write(dem, runTime, 0);

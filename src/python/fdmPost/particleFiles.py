@@ -26,9 +26,11 @@ import numpy as np
 H5_UNITS = ("time", "radius", "group", "position", "velocity",
             "angularVelocity", "force", "torque", "stresslet", "dipoleTrace",
             "contactForce", "contactTorque", "contactStresslet")
-H5_ATTRIBUTES = ("solver", "groupNames", "fluidDensity", "viscosity",
-                 "shearRate", "boxMin", "boxMax", "periodic", "gravity",
-                 "meshSpacing", "particleProperties")
+H5_ATTRIBUTES = ("solver", "groupNames", "viscosity", "shearRate", "boxMin",
+                 "boxMax", "periodic", "particleProperties")
+# fdmSuspensionFoam's also (the DEM has no mesh, and its gravity and fluid
+# density are entries of particleProperties)
+H5_FDM_ATTRIBUTES = ("fluidDensity", "gravity", "meshSpacing")
 FLOAT = 1e-6    # the VTK files hold single precision
 
 
@@ -129,7 +131,11 @@ def check_hdf5(case):
     failed = 0
     with h5py.File(path, "r") as f:
         no_units = [k for k in H5_UNITS if "units" not in f[k].attrs]
-        missing = [k for k in H5_ATTRIBUTES if k not in f.attrs]
+        solver = f.attrs.get("solver", b"")
+        solver = solver.decode() if isinstance(solver, bytes) else solver
+        required = H5_ATTRIBUTES + (
+            () if solver.startswith("lubricatedDEMFoam") else H5_FDM_ATTRIBUTES)
+        missing = [k for k in required if k not in f.attrs]
         nT = len(f["time"])
         groups = f.attrs.get("groupNames", b"").decode().split()
         bad_group = int(f["group"][:].max()) >= len(groups)
@@ -153,7 +159,7 @@ def main(argv=None):
     parser.add_argument("case")
     parser.add_argument("--contact-balance", action="store_true")
     parser.add_argument("--no-hdf5", action="store_true",
-                        help="skip particles.h5 (lubricatedDEMFoam)")
+                        help="skip particles.h5")
     args = parser.parse_args(argv)
     failed = check_vtk(args.case, args.contact_balance)
     if not args.no_hdf5:

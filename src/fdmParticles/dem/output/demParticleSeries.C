@@ -4,7 +4,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demParticleSeries.H"
+#include "particleList.H"
 #include "Time.H"
+#include "OStringStream.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -13,12 +15,19 @@ Foam::fdm::demParticleSeries::description(const lubricatedDEM& dem) const
 {
     const periodicBox& box = dem.box();
     const point hi = box.min() + box.span();
+    std::string groupNames;
+    for (const word& g : groupNames_)
+    {
+        groupNames += g + "\n";
+    }
     particleHDF5Metadata::description d;
     d.text =
     {
         {"solver", "lubricatedDEMFoam (libfdmParticles)"},
         {"openfoamApi", std::to_string(OPENFOAM)},
-        {"case", runTime_.globalPath()}
+        {"case", runTime_.globalPath()},
+        {"groupNames", groupNames},
+        {"particleProperties", properties_}
     };
     d.numbers =
     {
@@ -40,10 +49,32 @@ Foam::fdm::demParticleSeries::description(const lubricatedDEM& dem) const
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::fdm::demParticleSeries::demParticleSeries(const Time& runTime)
+Foam::fdm::demParticleSeries::demParticleSeries
+(
+    const Time& runTime,
+    const dictionary& props
+)
 :
     runTime_(runTime)
-{}
+{
+    const particleList list =
+        readParticleList(props, runTime.globalPath()/runTime.constant());
+    group_.setSize(list.group.size());
+    forAll(group_, i)
+    {
+        group_[i] = groupNames_.find(list.group[i]);
+        if (group_[i] < 0)
+        {
+            group_[i] = groupNames_.size();
+            groupNames_.append(list.group[i]);
+        }
+    }
+    dictionary parameters(props);
+    parameters.remove("particles");
+    OStringStream entries;
+    parameters.write(entries, false);
+    properties_ = entries.str();
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -60,7 +91,7 @@ void Foam::fdm::demParticleSeries::append(const lubricatedDEM& dem)
             new particleHDF5Writer
             (
                 runTime_.globalPath()/"postProcessing"/"particles.h5",
-                scalarField(dem.radii()), labelList(n, Zero),
+                scalarField(dem.radii()), group_,
                 runTime_.startTime().value() + 0.5*runTime_.deltaTValue(),
                 description(dem)
             )

@@ -6,6 +6,7 @@
 
 #include "demParticleSeries.H"
 #include "unitTestCase.H"
+#include "unitTestHelpers.H"
 #include <hdf5.h>
 #include <gtest/gtest.h>
 #include <vector>
@@ -58,7 +59,15 @@ TEST(demParticleSeries, recordsSplitThePairLoadsAsTheFDMRecords)
     const fdm::lubricatedDEM dem = touchingPair();
     ASSERT_GT(dem.nContacts(), 0);
     {
-        fdm::demParticleSeries series(sc.runTime());
+        fdm::demParticleSeries series
+        (
+            sc.runTime(),
+            unitTest::parse
+            (
+                "particles ((bed (4 4 4) 1) (free (4.3 5.982429 4) 1));"
+                " density 1;"
+            )
+        );
         series.append(dem);
         series.commit();
     }
@@ -71,6 +80,7 @@ TEST(demParticleSeries, recordsSplitThePairLoadsAsTheFDMRecords)
     const auto s = readSeries(h5, "dipoleTrace");
     const auto Sc = readSeries(h5, "contactStresslet");
     ASSERT_EQ(x.size(), 6u);
+    EXPECT_EQ(readSeries(h5, "group"), std::vector<double>({0, 1}));
 
     EXPECT_GT(mag(dem.contactForces()[0]), 0);
     for (label i = 0; i < 2; ++i)
