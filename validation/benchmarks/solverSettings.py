@@ -121,6 +121,9 @@ SETTINGS["uncorrected"] = UNCORRECTED
 # The pressure corrections started from U as it is, without the momentum
 # solve (part noPredictor)
 SETTINGS["noPredictor"] = (("SIMPLEC.momentumPredictor", "off", "fv"),)
+# ... on the steps between records only (part noPredictorBetween)
+SETTINGS["noPredictorBetween"] = (
+    ("SIMPLEC.momentumPredictorBetweenRecords", "off", "fv"),)
 # Consistent overlapping supports as a part (reference+consistent)
 SETTINGS["consistent"] = (("coupling.overlaps", "consistent", "pp"),)
 # The Rhie-Chow coefficient of the converged face flux in units of 1/a_C as

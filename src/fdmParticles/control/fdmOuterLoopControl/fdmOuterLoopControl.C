@@ -21,6 +21,7 @@ Foam::fdmOuterLoopControl::fdmOuterLoopControl
     nCorrectors_(2),
     nCorrectorsBetweenRecords_(2),
     momentumPredictor_(true),
+    momentumPredictorBetweenRecords_(true),
     nOuterCorrectors_(1),
     outerTolerance_(0),
     accelerationDepth_(0),

@@ -52,6 +52,7 @@ void Foam::fdmOuterLoopControl::read()
         d,
         {
             "nCorrectors", "nCorrectorsBetweenRecords", "momentumPredictor",
+            "momentumPredictorBetweenRecords",
             "nOuterCorrectors", "outerTolerance",
             "pRefCell", "pRefValue", "pRefPoint", "acceleration",
             "accelerationDepth", "accelerationRestart",
@@ -67,6 +68,10 @@ void Foam::fdmOuterLoopControl::read()
         d, "nCorrectorsBetweenRecords", nCorrectors_, " (default: nCorrectors)"
     );
     momentumPredictor_ = d.getOrDefault<bool>("momentumPredictor", true);
+    momentumPredictorBetweenRecords_ = d.getOrDefault<bool>
+    (
+        "momentumPredictorBetweenRecords", momentumPredictor_
+    );
     nOuterCorrectors_ = readCount(d, "nOuterCorrectors", -1, "");
 
     outerTolerance_ = d.get<scalar>("outerTolerance");

@@ -119,7 +119,8 @@ TEST(fdmOuterLoopControl, blockDefaultsAndSolversBetweenRecords)
     const fdmOuterLoopControl c(*cc.mesh);
     EXPECT_EQ(c.nCorrectors(false), 2);
     EXPECT_EQ(c.nCorrectors(true), 2);
-    EXPECT_TRUE(c.momentumPredictor());
+    EXPECT_TRUE(c.momentumPredictor(false));
+    EXPECT_TRUE(c.momentumPredictor(true));
     EXPECT_EQ(c.accelerationDepth(), 0);
     EXPECT_FALSE(c.layerMeanCorrection());
     EXPECT_EQ(c.solverDict("U", true).get<word>("solver"), "smoothSolver");
@@ -135,10 +136,21 @@ TEST(fdmOuterLoopControl, blockDefaultsAndSolversBetweenRecords)
     );
     const fdmOuterLoopControl d(*full.mesh);
     EXPECT_EQ(d.nCorrectors(true), 1);
-    EXPECT_FALSE(d.momentumPredictor());
+    EXPECT_FALSE(d.momentumPredictor(false));
+    EXPECT_FALSE(d.momentumPredictor(true));
     EXPECT_EQ(d.accelerationDepth(), 6);
     EXPECT_TRUE(d.layerMeanCorrection());
     EXPECT_EQ(d.RhieChowFactor(), 0.8);
+
+    controlCase between
+    (
+        "outerLoopReadBetween",
+        "nCorrectors 2; nOuterCorrectors 5;"
+        " momentumPredictorBetweenRecords off;"
+    );
+    const fdmOuterLoopControl e(*between.mesh);
+    EXPECT_TRUE(e.momentumPredictor(false));
+    EXPECT_FALSE(e.momentumPredictor(true));
 }
 
 
