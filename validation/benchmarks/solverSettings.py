@@ -234,14 +234,16 @@ def solve_as_between_records(case):
 
 
 def expanded_between_records(case):
-    """The case's fvSolution entries named *BetweenRecords, macros
-    expanded (foamDictionary -expand prints the whole file)."""
+    """The case's fvSolution entries named *BetweenRecords (solvers,
+    nCorrectors, momentumPredictor), macros expanded (foamDictionary
+    -expand prints the whole file)."""
     out = subprocess.run(["foamDictionary", "-expand", FILES["fv"]],
                          cwd=case, stdout=subprocess.PIPE, check=True,
                          env=in_case(case)).stdout.decode()
     solvers = re.finditer(r"^    (\w+BetweenRecords)\s*\{(.*?)^    \}",
                           out, re.M | re.S)
-    counts = re.finditer(r"^    (nCorrectorsBetweenRecords)\s+(\d+);", out,
+    counts = re.finditer(r"^    (nCorrectorsBetweenRecords|"
+                         r"momentumPredictorBetweenRecords)\s+(\w+);", out,
                          re.M)
     return ([("solvers.%s" % m.group(1), "{%s}" % m.group(2), "fv")
              for m in solvers]
