@@ -50,9 +50,9 @@ void Foam::fdm::checkDictionariesReadable
             trapsOff.restore();
             FatalIOErrorInFunction(is)
                 << "Cannot read " << file << ": " << e.message().c_str()
-                << nl << "    Numbers must be finite doubles (magnitude"
-                << " below about 1.8e308); check the entry named above"
-                << exit(FatalIOError);
+                << nl << "    Allowed: OpenFOAM dictionary syntax with finite"
+                << " numbers (magnitude below about 1.8e308); check the"
+                << " entry named above" << exit(FatalIOError);
         }
         FatalIOError.throwExceptions(throwing);
     }

@@ -31,7 +31,7 @@ TEST(readableDictionaries, hugeNumberStopsNamingFileAndKeywordWithTrapsOn)
     EXPECT_NE(msg.find("constant/transportProperties"), std::string::npos)
         << msg;
     EXPECT_NE(msg.find("keyword 'rho'"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("finite doubles"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("finite numbers"), std::string::npos) << msg;
 }
 
 
