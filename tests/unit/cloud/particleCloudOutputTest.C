@@ -9,7 +9,7 @@
 #include "cloud.H"
 #include "unitTestCase.H"
 #include "unitTestHelpers.H"
-#include <hdf5.h>
+#include "unitTestHDF5.H"
 #include <gtest/gtest.h>
 
 using namespace Foam;
@@ -81,15 +81,7 @@ TEST(particleCloudOutput, recordsOnTheDueStepsAndPublishesAtWriteTimes)
     EXPECT_EQ(due, labelList({2, 3, 4, 5, 6, 8, 9, 10}));
 
     const fileName h5 = sc.path()/"postProcessing/particles.h5";
-    const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    ASSERT_GE(f, 0);
-    const hid_t ds = H5Dopen2(f, "time", H5P_DEFAULT);
-    const hid_t space = H5Dget_space(ds);
-    std::vector<double> t(H5Sget_simple_extent_npoints(space));
-    H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, t.data());
-    H5Sclose(space);
-    H5Dclose(ds);
-    H5Fclose(f);
+    const std::vector<double> t = unitTest::readDataset(h5, "time");
     ASSERT_EQ(t.size(), 5u);
     for (label k = 0; k < 5; ++k)
     {

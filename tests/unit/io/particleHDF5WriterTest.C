@@ -9,7 +9,7 @@
 #include "OSspecific.H"
 #include "OFstream.H"
 #include "unitTestCase.H"
-#include <hdf5.h>
+#include "unitTestHDF5.H"
 #include <gtest/gtest.h>
 #include <vector>
 
@@ -48,20 +48,6 @@ struct recordAt
         return {x, U, W, F, T, S, s, Fc, Tc, Sc};
     }
 };
-
-//- A dataset of particles.h5 as a flat list of doubles
-std::vector<double> readSeries(const fileName& h5, const char* name)
-{
-    const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    const hid_t ds = H5Dopen2(f, name, H5P_DEFAULT);
-    const hid_t space = H5Dget_space(ds);
-    std::vector<double> v(H5Sget_simple_extent_npoints(space));
-    H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-    H5Sclose(space);
-    H5Dclose(ds);
-    H5Fclose(f);
-    return v;
-}
 
 //- The series of a scratch case's postProcessing/particles.h5
 struct series
@@ -114,9 +100,9 @@ TEST(particleHDF5Writer, recordsReadBackThroughTheMasterFile)
         EXPECT_EQ(w.nCommitted(), 2);        // not published yet
     }                                       // the end of a run commits
 
-    EXPECT_EQ(readSeries(s.h5, "time"), std::vector<double>({0.1, 0.2, 0.3}));
-    const std::vector<double> x = readSeries(s.h5, "position");
-    const std::vector<double> S = readSeries(s.h5, "contactStresslet");
+    EXPECT_EQ(unitTest::readDataset(s.h5, "time"), std::vector<double>({0.1, 0.2, 0.3}));
+    const std::vector<double> x = unitTest::readDataset(s.h5, "position");
+    const std::vector<double> S = unitTest::readDataset(s.h5, "contactStresslet");
     ASSERT_EQ(x.size(), size_t(3*N*3));
     const scalarList times({0.1, 0.2, 0.3});
     forAll(times, k)
@@ -134,7 +120,7 @@ TEST(particleHDF5Writer, recordsReadBackThroughTheMasterFile)
             }
         }
     }
-    EXPECT_EQ(readSeries(s.h5, "radius"), std::vector<double>({1, 1.2, 0.9}));
+    EXPECT_EQ(unitTest::readDataset(s.h5, "radius"), std::vector<double>({1, 1.2, 0.9}));
 }
 
 
@@ -146,9 +132,9 @@ TEST(particleHDF5Writer, restartDropsRecordsFromItsStartAndContinues)
 
     EXPECT_EQ
     (
-        readSeries(s.h5, "time"), std::vector<double>({0.1, 0.2, 0.25})
+        unitTest::readDataset(s.h5, "time"), std::vector<double>({0.1, 0.2, 0.25})
     );
-    const std::vector<double> x = readSeries(s.h5, "position");
+    const std::vector<double> x = unitTest::readDataset(s.h5, "position");
     EXPECT_EQ(x[3*N], 0.2);                 // the restarted run's record
 }
 
@@ -159,7 +145,7 @@ TEST(particleHDF5Writer, unreadableSeriesIsMovedAsideNotOverwritten)
     OFstream(s.h5)() << "not an HDF5 file" << endl;
     s.write(0, {0.5}, -1);
 
-    EXPECT_EQ(readSeries(s.h5, "time"), std::vector<double>({0.5}));
+    EXPECT_EQ(unitTest::readDataset(s.h5, "time"), std::vector<double>({0.5}));
     fileNameList aside = readDir(s.dir, fileName::FILE);
     label nAside = 0;
     for (const fileName& f : aside)

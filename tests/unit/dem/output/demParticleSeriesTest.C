@@ -7,7 +7,7 @@
 #include "demParticleSeries.H"
 #include "unitTestCase.H"
 #include "unitTestHelpers.H"
-#include <hdf5.h>
+#include "unitTestHDF5.H"
 #include <gtest/gtest.h>
 #include <vector>
 
@@ -15,19 +15,6 @@ using namespace Foam;
 
 namespace
 {
-
-std::vector<double> readSeries(const fileName& h5, const char* name)
-{
-    const hid_t f = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
-    const hid_t ds = H5Dopen2(f, name, H5P_DEFAULT);
-    const hid_t space = H5Dget_space(ds);
-    std::vector<double> v(H5Sget_simple_extent_npoints(space));
-    H5Dread(ds, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data());
-    H5Sclose(space);
-    H5Dclose(ds);
-    H5Fclose(f);
-    return v;
-}
 
 //- Two spheres touching through their asperities (gap below the
 //  roughness 1e-2 a), sheared, with a weight on the second
@@ -72,15 +59,15 @@ TEST(demParticleSeries, recordsSplitThePairLoadsAsTheFDMRecords)
         series.commit();
     }
     const fileName h5 = sc.path()/"postProcessing/particles.h5";
-    const auto x = readSeries(h5, "position");
-    const auto U = readSeries(h5, "velocity");
-    const auto F = readSeries(h5, "force");
-    const auto Fc = readSeries(h5, "contactForce");
-    const auto S = readSeries(h5, "stresslet");
-    const auto s = readSeries(h5, "dipoleTrace");
-    const auto Sc = readSeries(h5, "contactStresslet");
+    const auto x = unitTest::readDataset(h5, "position");
+    const auto U = unitTest::readDataset(h5, "velocity");
+    const auto F = unitTest::readDataset(h5, "force");
+    const auto Fc = unitTest::readDataset(h5, "contactForce");
+    const auto S = unitTest::readDataset(h5, "stresslet");
+    const auto s = unitTest::readDataset(h5, "dipoleTrace");
+    const auto Sc = unitTest::readDataset(h5, "contactStresslet");
     ASSERT_EQ(x.size(), 6u);
-    EXPECT_EQ(readSeries(h5, "group"), std::vector<double>({0, 1}));
+    EXPECT_EQ(unitTest::readDataset(h5, "group"), std::vector<double>({0, 1}));
 
     EXPECT_GT(mag(dem.contactForces()[0]), 0);
     for (label i = 0; i < 2; ++i)

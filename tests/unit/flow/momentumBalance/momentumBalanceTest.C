@@ -20,30 +20,40 @@ const label n = 4;
 const scalar Delta = 0.25;
 const scalar nu = 0.7;
 
-autoPtr<fvMesh> channel(unitTest::scratchCase& sc)
+//- A channel box of n^3 cells with zero U (walls fixed) and p on it
+struct channel
 {
-    return unitTest::boxMesh
-    (
-        sc.runTime(), labelVector(n, n, n), Delta, unitTest::channelSides()
-    );
-}
+    unitTest::scratchCase sc;
+    autoPtr<fvMesh> mesh;
+    tmp<volVectorField> tU;
+    tmp<volScalarField> tp;
+
+    explicit channel(const word& name)
+    :
+        sc(name)
+    {
+        mesh = unitTest::boxMesh
+        (
+            sc.runTime(), labelVector(n, n, n), Delta,
+            unitTest::channelSides()
+        );
+        tU = unitTest::zeroField<vector>
+        (
+            *mesh, "U", dimVelocity, "fixedValue"
+        );
+        tp = unitTest::zeroField<scalar>(*mesh, "p", sqr(dimVelocity));
+    }
+};
 
 } // End anonymous namespace
 
 
 TEST(momentumBalance, parabolicProfileWallForceByHand)
 {
-    unitTest::scratchCase sc("momentumBalanceParabola");
-    autoPtr<fvMesh> mesh = channel(sc);
-    tmp<volVectorField> tU =
-        unitTest::zeroField<vector>
-        (
-            *mesh, "U", dimVelocity, "fixedValue"
-        );
-    tmp<volScalarField> tp =
-        unitTest::zeroField<scalar>(*mesh, "p", sqr(dimVelocity));
-    volVectorField& U = tU.ref();
-    volScalarField& p = tp.ref();
+    channel ch("momentumBalanceParabola");
+    const autoPtr<fvMesh>& mesh = ch.mesh;
+    volVectorField& U = ch.tU.ref();
+    volScalarField& p = ch.tp.ref();
 
     // u_x = y (1 - y), zero on both walls; p 2 on the lower wall, 1 on the
     // upper one
@@ -67,17 +77,10 @@ TEST(momentumBalance, parabolicProfileWallForceByHand)
 
 TEST(momentumBalance, wallForceIsTheVolumeSumOfTheMomentumOperators)
 {
-    unitTest::scratchCase sc("momentumBalanceTelescope");
-    autoPtr<fvMesh> mesh = channel(sc);
-    tmp<volVectorField> tU =
-        unitTest::zeroField<vector>
-        (
-            *mesh, "U", dimVelocity, "fixedValue"
-        );
-    tmp<volScalarField> tp =
-        unitTest::zeroField<scalar>(*mesh, "p", sqr(dimVelocity));
-    volVectorField& U = tU.ref();
-    volScalarField& p = tp.ref();
+    channel ch("momentumBalanceTelescope");
+    const autoPtr<fvMesh>& mesh = ch.mesh;
+    volVectorField& U = ch.tU.ref();
+    volScalarField& p = ch.tp.ref();
 
     // Arbitrary periodic fields with arbitrary wall values
     forAll(U, celli)
@@ -121,15 +124,10 @@ TEST(momentumBalance, wallForceIsTheVolumeSumOfTheMomentumOperators)
 
 TEST(momentumBalance, writesOneLinePerCallInAFileOfItsOwn)
 {
-    unitTest::scratchCase sc("momentumBalanceWrite");
-    autoPtr<fvMesh> mesh = channel(sc);
-    tmp<volVectorField> tU =
-        unitTest::zeroField<vector>
-        (
-            *mesh, "U", dimVelocity, "fixedValue"
-        );
-    tmp<volScalarField> tp =
-        unitTest::zeroField<scalar>(*mesh, "p", sqr(dimVelocity));
+    channel ch("momentumBalanceWrite");
+    const autoPtr<fvMesh>& mesh = ch.mesh;
+    tmp<volVectorField>& tU = ch.tU;
+    const tmp<volScalarField>& tp = ch.tp;
     tmp<volVectorField> tl =
         unitTest::zeroField<vector>(*mesh, "lambda", dimAcceleration);
     tU.ref().primitiveFieldRef() = vector(1, 0, 0);
@@ -141,7 +139,7 @@ TEST(momentumBalance, writesOneLinePerCallInAFileOfItsOwn)
         second.write(tU(), tp(), tl(), nu, vector(0, 1, 0), vector(3, 0, 0));
     }
 
-    const fileName dir = sc.path()/"postProcessing/momentumBalance/0";
+    const fileName dir = ch.sc.path()/"postProcessing/momentumBalance/0";
     for (const word f : {"momentumBalance.dat", "momentumBalance_1.dat"})
     {
         IFstream is(dir/f);

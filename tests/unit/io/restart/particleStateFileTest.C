@@ -4,7 +4,6 @@
 // at a time other than 0 without the file stops naming it.
 
 #include "particleStateFile.H"
-#include "sigFpe.H"
 #include "unitTestCase.H"
 #include "unitTestHelpers.H"
 #include <gtest/gtest.h>
@@ -39,18 +38,10 @@ TEST(particleStateFile, numberOutOfRangeIsAnErrorNamingTheFileWithTrapsOn)
 {
     unitTest::scratchCase sc("particleStateFileRange");
     sc.writeFile("particleState", "x 1e400;");
-    const bool wasSet = sigFpe::requested();
-    setEnv("FOAM_SIGFPE", "true", true);
-    sigFpe::set();
-    const std::string msg = unitTest::errorOf([&]
+    const std::string msg = unitTest::errorWithTrapsOn([&]
     {
         fdm::readParticleStateFile(sc.path()/"particleState");
     });
-    if (!wasSet)
-    {
-        sigFpe::unset();
-        setEnv("FOAM_SIGFPE", "false", true);
-    }
     EXPECT_NE(msg.find("file: " + sc.path()/"particleState"),
               std::string::npos) << msg;
 }
