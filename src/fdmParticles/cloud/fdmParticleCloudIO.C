@@ -12,7 +12,6 @@ Description
 #include "particleStateFile.H"
 #include "isFinite.H"
 #include "planeWalls.H"
-#include "StringStream.H"
 
 // * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
 
@@ -95,51 +94,34 @@ void Foam::fdmParticleCloud::writeState() const
 Foam::particleHDF5Metadata::description
 Foam::fdmParticleCloud::hdf5Description() const
 {
-    particleHDF5Metadata::description d;
-    std::string groups;
-    for (const particleGroup& g : groups_)
+    wordList groupNames(groups_.size());
+    forAll(groups_, g)
     {
-        groups += g.name() + "\n";
+        groupNames[g] = groups_[g].name();
     }
-    dictionary parameters(dict_);
-    parameters.remove("particles");
-    OStringStream entries;
-    parameters.write(entries, false);
-    d.text =
+    FixedList<bool, 3> periodic;
+    for (direction d = 0; d < 3; ++d)
     {
-        {"solver", "fdmSuspensionFoam (libfdmParticles)"},
-        {"openfoamApi", std::to_string(OPENFOAM)},
-        {"case", mesh_.time().globalPath()},
-        {"groupNames", groups},
-        {"particleProperties", entries.str()}
-    };
-
-    const boundBox& bb = mesh_.bounds();
-    auto numbers = [](const vector& v)
-    {
-        return std::vector<double>{v.x(), v.y(), v.z()};
-    };
-    d.numbers =
-    {
-        {"fluidDensity", {rhoFluid_}},
-        {"viscosity", {rhoFluid_*nu_}},
-        {"kinematicViscosity", {nu_}},
+        periodic[d] = box_.periodic(d);
+    }
+    particleHDF5Metadata::description d =
+        particleHDF5Metadata::runDescription
+        (
+            "fdmSuspensionFoam (libfdmParticles)", mesh_.time().globalPath(),
+            groupNames, dict_, rhoFluid_*nu_,
+            planeWalls(mesh_, "HDF5 description", false).shearRate(),
+            mesh_.bounds(), periodic
+        );
+    d.numbers.insert
+    (
+        d.numbers.end(),
         {
-            "shearRate",
-            {planeWalls(mesh_, "HDF5 description", false).shearRate()}
-        },
-        {"boxMin", numbers(bb.min())},
-        {"boxMax", numbers(bb.max())},
-        {
-            "periodic",
-            {
-                double(box_.periodic(0)), double(box_.periodic(1)),
-                double(box_.periodic(2))
-            }
-        },
-        {"gravity", numbers(gravity_)},
-        {"meshSpacing", {delta_}}
-    };
+            {"fluidDensity", {rhoFluid_}},
+            {"kinematicViscosity", {nu_}},
+            {"gravity", {gravity_.x(), gravity_.y(), gravity_.z()}},
+            {"meshSpacing", {delta_}}
+        }
+    );
     return d;
 }
 

@@ -6,6 +6,7 @@
 #include "particleHDF5Metadata.H"
 #include "OFstream.H"
 #include "OSspecific.H"
+#include "OStringStream.H"
 
 #include <hdf5.h>
 #include <sstream>
@@ -65,6 +66,57 @@ void Foam::particleHDF5Metadata::writeText
     H5Aclose(a);
     H5Sclose(space);
     H5Tclose(type);
+}
+
+
+Foam::particleHDF5Metadata::description
+Foam::particleHDF5Metadata::runDescription
+(
+    const std::string& solver,
+    const fileName& caseDir,
+    const wordList& groupNames,
+    const dictionary& particleProperties,
+    const scalar viscosity,
+    const scalar shearRate,
+    const boundBox& cell,
+    const FixedList<bool, 3>& periodic
+)
+{
+    std::string groups;
+    for (const word& g : groupNames)
+    {
+        groups += g + "\n";
+    }
+    dictionary parameters(particleProperties);
+    parameters.remove("particles");
+    OStringStream entries;
+    parameters.write(entries, false);
+    auto numbers = [](const vector& v)
+    {
+        return std::vector<double>{v.x(), v.y(), v.z()};
+    };
+
+    description d;
+    d.text =
+    {
+        {"solver", solver},
+        {"openfoamApi", std::to_string(OPENFOAM)},
+        {"case", caseDir},
+        {"groupNames", groups},
+        {"particleProperties", entries.str()}
+    };
+    d.numbers =
+    {
+        {"viscosity", {viscosity}},
+        {"shearRate", {shearRate}},
+        {"boxMin", numbers(cell.min())},
+        {"boxMax", numbers(cell.max())},
+        {
+            "periodic",
+            {double(periodic[0]), double(periodic[1]), double(periodic[2])}
+        }
+    };
+    return d;
 }
 
 

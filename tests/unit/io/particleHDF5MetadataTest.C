@@ -1,13 +1,16 @@
 // Unit test of the particle series' metadata: the run's description and
 // the units read back as HDF5 attributes, and the XDMF companion: one grid
-// per record at its time, every dataset it points to present in the file.
+// per record at its time, every dataset it points to present in the file;
+// the description both solvers share.
 
 #include "particleHDF5Metadata.H"
 #include "particleHDF5Writer.H"
 #include "IFstream.H"
 #include "unitTestCase.H"
+#include "unitTestHelpers.H"
 #include <hdf5.h>
 #include <gtest/gtest.h>
+#include <map>
 #include <regex>
 
 using namespace Foam;
@@ -103,4 +106,35 @@ TEST(particleHDF5Metadata, xdmfHasAGridPerRecordOverExistingDatasets)
     }
     H5Fclose(f);
     EXPECT_GT(nRefs, 10);
+}
+
+
+TEST(particleHDF5Metadata, runDescriptionHasTheCommonEntries)
+{
+    const dictionary props
+    (
+        unitTest::parse("density 2; particles ((a (1 1 1) 1));")
+    );
+    const particleHDF5Metadata::description d =
+        particleHDF5Metadata::runDescription
+        (
+            "solverX", "/case", wordList({"a", "b"}), props, 0.5, 2,
+            boundBox(point(0, 1, 2), point(3, 4, 5)),
+            FixedList<bool, 3>({true, false, true})
+        );
+    std::map<std::string, std::string> text(d.text.begin(), d.text.end());
+    std::map<std::string, std::vector<double>> numbers
+    (
+        d.numbers.begin(), d.numbers.end()
+    );
+    EXPECT_EQ(text["solver"], "solverX");
+    EXPECT_EQ(text["groupNames"], "a\nb\n");
+    // The inline particle list is left out, the other entries kept
+    EXPECT_EQ(text["particleProperties"].find("particles"), std::string::npos);
+    EXPECT_NE(text["particleProperties"].find("density"), std::string::npos);
+    EXPECT_EQ(numbers["viscosity"], std::vector<double>({0.5}));
+    EXPECT_EQ(numbers["shearRate"], std::vector<double>({2}));
+    EXPECT_EQ(numbers["boxMin"], std::vector<double>({0, 1, 2}));
+    EXPECT_EQ(numbers["boxMax"], std::vector<double>({3, 4, 5}));
+    EXPECT_EQ(numbers["periodic"], std::vector<double>({1, 0, 1}));
 }

@@ -5,6 +5,7 @@
 
 #include "channelAverages.H"
 #include "mathematicalConstants.H"
+#include "unitTestHelpers.H"
 
 #include <gtest/gtest.h>
 
@@ -216,8 +217,7 @@ namespace
 // walls normal to y, flow along x, 5 bins, wall layer 2.
 std::string goldenChannelTable()
 {
-    const char* root = std::getenv("FDM_PROJECT_DIR");
-    return std::string(root ? root : ".") + "/tests/golden/channelAverages.dat";
+    return unitTest::projectFile("tests/golden/channelAverages.dat");
 }
 
 //- Rows "name index value" of the averages of sample s
@@ -269,7 +269,7 @@ TEST(channelAverages, matchesTheGoldenTable)
     // 6.18-6.19 (and the Python twin must follow)
     const fdm::particleSample s = randomSample(16, 10, 11);
     const auto rows = channelRows(s);
-    if (std::getenv("FDM_WRITE_GOLDEN"))
+    if (unitTest::writingGolden())
     {
         std::ofstream os(goldenChannelTable());
         os.precision(17);

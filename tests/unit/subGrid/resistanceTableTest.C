@@ -4,6 +4,7 @@
 #include "resistanceTable.H"
 #include "IStringStream.H"
 #include "OFstream.H"
+#include "unitTestHelpers.H"
 #include "OSspecific.H"
 
 #include <gtest/gtest.h>
@@ -287,12 +288,6 @@ namespace
 // Golden table of the shipped a/5 sub-grid tables as resistanceTable
 // evaluates them, rows (table, function, gap, value at a1 = 1); the Python
 // twin (fdmResistance.tables.evaluate) is tested on it too
-std::string projectFile(const std::string& rel)
-{
-    const char* root = std::getenv("FDM_PROJECT_DIR");
-    return std::string(root ? root : ".") + "/" + rel;
-}
-
 struct goldenRow
 {
     std::string table;
@@ -309,7 +304,7 @@ std::vector<goldenRow> shippedTableRows()
     {
         const table t = table::read
         (
-            projectFile(std::string("data/resistance/") + name)
+            unitTest::projectFile(std::string("data/resistance/") + name)
         );
         const wordList& functions =
             t.isPair() ? table::pairFunctionNames : table::wallFunctionNames;
@@ -333,9 +328,9 @@ TEST(resistanceTable, shippedTablesMatchTheGoldenTable)
     // FDM_WRITE_GOLDEN=1 fdmUnitTests rewrites the golden table after a
     // deliberate change of the tables or of their evaluation (the Python
     // reader must follow)
-    const std::string golden = projectFile("tests/golden/resistanceTables.dat");
+    const std::string golden = unitTest::projectFile("tests/golden/resistanceTables.dat");
     const std::vector<goldenRow> rows(shippedTableRows());
-    if (std::getenv("FDM_WRITE_GOLDEN"))
+    if (unitTest::writingGolden())
     {
         std::ofstream os(golden);
         os.precision(17);

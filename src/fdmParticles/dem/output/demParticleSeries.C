@@ -6,7 +6,6 @@
 #include "demParticleSeries.H"
 #include "particleList.H"
 #include "Time.H"
-#include "OStringStream.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -14,36 +13,17 @@ Foam::particleHDF5Metadata::description
 Foam::fdm::demParticleSeries::description(const lubricatedDEM& dem) const
 {
     const periodicBox& box = dem.box();
-    const point hi = box.min() + box.span();
-    std::string groupNames;
-    for (const word& g : groupNames_)
+    FixedList<bool, 3> periodic;
+    for (direction d = 0; d < 3; ++d)
     {
-        groupNames += g + "\n";
+        periodic[d] = box.periodic(d);
     }
-    particleHDF5Metadata::description d;
-    d.text =
-    {
-        {"solver", "lubricatedDEMFoam (libfdmParticles)"},
-        {"openfoamApi", std::to_string(OPENFOAM)},
-        {"case", runTime_.globalPath()},
-        {"groupNames", groupNames},
-        {"particleProperties", properties_}
-    };
-    d.numbers =
-    {
-        {"viscosity", {dem.model().viscosity()}},
-        {"shearRate", {dem.shearRate()}},
-        {"boxMin", {box.min().x(), box.min().y(), box.min().z()}},
-        {"boxMax", {hi.x(), hi.y(), hi.z()}},
-        {
-            "periodic",
-            {
-                double(box.periodic(0)), double(box.periodic(1)),
-                double(box.periodic(2))
-            }
-        }
-    };
-    return d;
+    return particleHDF5Metadata::runDescription
+    (
+        "lubricatedDEMFoam (libfdmParticles)", runTime_.globalPath(),
+        groupNames_, properties_, dem.model().viscosity(), dem.shearRate(),
+        boundBox(box.min(), box.min() + box.span()), periodic
+    );
 }
 
 
@@ -55,7 +35,8 @@ Foam::fdm::demParticleSeries::demParticleSeries
     const dictionary& props
 )
 :
-    runTime_(runTime)
+    runTime_(runTime),
+    properties_(props)
 {
     const particleList list =
         readParticleList(props, runTime.globalPath()/runTime.constant());
@@ -69,11 +50,6 @@ Foam::fdm::demParticleSeries::demParticleSeries
             groupNames_.append(list.group[i]);
         }
     }
-    dictionary parameters(props);
-    parameters.remove("particles");
-    OStringStream entries;
-    parameters.write(entries, false);
-    properties_ = entries.str();
 }
 
 

@@ -4,6 +4,7 @@
 
 #include "contactLawTestHelpers.H"
 #include "contactLoads.H"
+#include "unitTestHelpers.H"
 #include "IStringStream.H"
 #include "mathematicalConstants.H"
 
@@ -25,8 +26,7 @@ namespace
 // Python contact law (fdmResistance.pairContact) is tested on it too
 std::string goldenTable()
 {
-    const char* root = std::getenv("FDM_PROJECT_DIR");
-    return std::string(root ? root : ".") + "/tests/golden/contactBarrier.dat";
+    return unitTest::projectFile("tests/golden/contactBarrier.dat");
 }
 
 std::vector<std::vector<double>> readGolden(const std::string& file)
@@ -98,7 +98,7 @@ TEST(contactLaw, barrierMatchesTheGoldenTable)
     // FDM_WRITE_GOLDEN=1 fdmUnitTests rewrites the table after a deliberate
     // change of eq 2.57 (and the Python law must follow)
     const std::vector<std::vector<double>> rows(goldenRows());
-    if (std::getenv("FDM_WRITE_GOLDEN"))
+    if (unitTest::writingGolden())
     {
         std::ofstream os(goldenTable());
         os.precision(17);
