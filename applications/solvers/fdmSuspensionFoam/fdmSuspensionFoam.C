@@ -50,6 +50,7 @@ Usage
 #include "incompleteWrites.H"
 #include "readableDictionaries.H"
 #include "layerMeanCorrection.H"
+#include "transposeViscousTerm.H"
 #include "planeWalls.H"
 #include <iomanip>
 #include <sstream>
