@@ -10,8 +10,9 @@
 #      nothing of the step written
 #   5. physical input: deltaT 0, < 0 and 1e400, nu and U 1e400 (a clear error
 #      under FOAM_SIGFPE, not a trap), endTime before the start, a
-#      non-finite position, an empty list, a wrong count, changed radii on
-#      restart
+#      non-finite position, an empty list, a wrong count, a step that moves
+#      a sphere by more than a mesh spacing (nothing of it written), changed
+#      radii on restart
 # Checks in checkDataSafety.py.
 source "${0%/*}/caseTestFunctions"
 
@@ -133,6 +134,16 @@ expectStopIn emptyList "is empty" \
     "sed -i 's/^particles .*;/particles ();/' constant/particleProperties"
 expectStopIn wrongCount "announces 3 particles but holds 2" \
     "sed -i 's/^particles *( (/particles 3( (/' constant/particleProperties"
+# A step that would move a sphere by more than a mesh spacing (deltaT 1 on
+# cells of 0.2, speeds of order 1) stops after the first solve, before
+# anything of it is written
+unresolved="$work/unresolvedStep"
+expectStopIn unresolvedStep "mesh spacings) in one step" \
+    foamDictionary -entry deltaT -set 1 system/controlDict
+[ -z "$(ls -d "$unresolved/"0.* "$unresolved/"[1-9]* 2> /dev/null)" ] \
+    && [ ! -f "$unresolved/0/particleState" ] \
+    && [ ! -f "$unresolved/postProcessing/particles.h5" ] \
+    || fail "unresolved step wrote a time or records"
 changed="$work/changedRadius"
 cp -r "$work/straight" "$changed"
 rm -rf "$changed/0.4"

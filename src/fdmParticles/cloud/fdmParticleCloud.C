@@ -232,6 +232,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     alphaLambda_(0),
     lambdaTolerances_{0, 0, 0},
     solveTolerance_(1e-6),
+    maxCourant_(1),
     consistentOverlaps_(false),
     box_(point::zero, point::one, FixedList<bool, 3>(false)),
     domainVolume_(gSum(mesh.V())),

@@ -54,7 +54,8 @@ void Foam::fdmParticleCloud::readCoupling()
         {
             "lambdaTolerance", "lambdaToleranceFirstStep",
             "lambdaToleranceBetweenRecords",
-            "particleSolveTolerance", "alphaLambdaFactor", "overlaps"
+            "particleSolveTolerance", "alphaLambdaFactor", "overlaps",
+            "maxParticleCourant"
         },
         "coupling block"
     );
@@ -77,6 +78,9 @@ void Foam::fdmParticleCloud::readCoupling()
     );
     solveTolerance_ = c.get<scalar>("particleSolveTolerance");
     requirePositive(c, "particleSolveTolerance", solveTolerance_);
+
+    maxCourant_ = c.getOrDefault<scalar>("maxParticleCourant", 1);
+    requirePositive(c, "maxParticleCourant", maxCourant_);
 
     const scalar factor = c.getOrDefault<scalar>("alphaLambdaFactor", 1);
     requirePositive(c, "alphaLambdaFactor", factor);

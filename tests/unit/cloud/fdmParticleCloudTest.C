@@ -5,7 +5,8 @@
 // linear shear its translation and half its vorticity; the first move is
 // an Euler step wrapped through the periodic boundary; the restart state
 // gives the cloud back to the last bit; bad particle input stops naming
-// the keyword.
+// the keyword; a step that moves a particle by more than maxParticleCourant
+// mesh spacings stops naming it.
 
 #include "fdmParticleCloud.H"
 #include "unitTestCase.H"
@@ -156,4 +157,61 @@ TEST(fdmParticleCloud, badParticleInputStopsNamingIt)
     });
     EXPECT_NE(name.find("fre"), std::string::npos) << name;
     EXPECT_NE(name.find("free"), std::string::npos) << name;
+}
+
+
+TEST(fdmParticleCloud, stepThatOutrunsTheMeshStopsNamingTheParticle)
+{
+    // Velocity 2 on cells of 0.25: Courant number 8 deltaT
+    cloudCase cc("fdmParticleCloudCourant");
+    fdmParticleCloud cloud(*cc.mesh, cc.transport);
+    cloud.prepare(cc.lambda.ref());
+    cc.setU([](const point&) { return vector(0, 2, 0); });
+    cloud.correct(cc.U.ref(), cc.lambda.ref());
+
+    cloud.checkMotionResolved(0.12);      // Courant 0.96: allowed
+    const std::string message = unitTest::errorOf([&]
+    {
+        cloud.checkMotionResolved(0.13);  // Courant 1.04
+    });
+    EXPECT_NE(message.find("Particle 0 would move"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("(1.04"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("maxParticleCourant"), std::string::npos)
+        << message;
+    EXPECT_NE(message.find("lower deltaT"), std::string::npos) << message;
+}
+
+
+TEST(fdmParticleCloud, courantLimitIsReadAndChecked)
+{
+    cloudCase cc("fdmParticleCloudCourantLimit");
+    cc.sc.writeFile
+    (
+        "constant/particleProperties",
+        "coupling { lambdaTolerance 1e-8; particleSolveTolerance 1e-13;"
+        " maxParticleCourant 2; } groups { free { } }"
+        " particles ((free (2 2 2) 1));"
+    );
+    fdmParticleCloud cloud(*cc.mesh, cc.transport);
+    cloud.prepare(cc.lambda.ref());
+    cc.setU([](const point&) { return vector(0, 2, 0); });
+    cloud.correct(cc.U.ref(), cc.lambda.ref());
+    cloud.checkMotionResolved(0.24);      // Courant 1.92: allowed now
+    EXPECT_FALSE(unitTest::errorOf([&] { cloud.checkMotionResolved(0.26); })
+        .empty());
+
+    cc.sc.writeFile
+    (
+        "constant/particleProperties",
+        "coupling { lambdaTolerance 1e-8; particleSolveTolerance 1e-13;"
+        " maxParticleCourant 0; } groups { free { } }"
+        " particles ((free (2 2 2) 1));"
+    );
+    const std::string zero = unitTest::errorOf([&]
+    {
+        fdmParticleCloud bad(*cc.mesh, cc.transport);
+    });
+    EXPECT_NE(zero.find("maxParticleCourant"), std::string::npos) << zero;
 }
