@@ -51,6 +51,7 @@ Usage
 #include "readableDictionaries.H"
 #include "layerMeanCorrection.H"
 #include "transposeViscousTerm.H"
+#include "heapReuse.H"
 #include "planeWalls.H"
 #include <iomanip>
 #include <sstream>
@@ -71,6 +72,9 @@ int main(int argc, char *argv[])
         "One summary line per time step: no linear-solver, outer-iteration,"
         " contact or timing lines (warnings and errors stay)"
     );
+
+    // Temporary fields reuse freed heap memory instead of fresh pages
+    fdm::keepFreedMemory();
 
     #include "postProcess.H"
 

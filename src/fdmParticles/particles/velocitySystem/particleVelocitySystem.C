@@ -26,44 +26,57 @@ typedef Eigen::ConjugateGradient
 > preconditionedCG;
 
 
-//- The matrix of the entries (rows, cols, values) with the prescribed
-//  unknowns eliminated: known columns go to the right-hand side b, their
-//  rows become identity rows (keeps the matrix SPD)
-sparseMatrix eliminatePrescribed
+//- The right-hand side with the prescribed unknowns eliminated: known
+//  columns move to it, the rows of known unknowns hold their values
+Eigen::VectorXd reducedRhs
 (
     const Foam::UList<Foam::label>& rows,
     const Foam::UList<Foam::label>& cols,
     const Foam::UList<Foam::scalar>& values,
     const Foam::UList<Foam::scalar>& rhs,
     const Foam::UList<bool>& prescribed,
-    const Foam::UList<Foam::scalar>& prescribedValue,
-    Eigen::VectorXd& b
+    const Foam::UList<Foam::scalar>& prescribedValue
 )
 {
     using namespace Foam;
     const label n = rhs.size();
-    b.resize(n);
+    Eigen::VectorXd b(n);
     for (label k = 0; k < n; ++k)
     {
         b[k] = prescribed[k] ? prescribedValue[k] : rhs[k];
     }
+    forAll(values, e)
+    {
+        if (!prescribed[rows[e]] && prescribed[cols[e]])
+        {
+            b[rows[e]] -= values[e]*prescribedValue[cols[e]];
+        }
+    }
+    return b;
+}
 
+
+//- The matrix of the entries (rows, cols, values) with the prescribed
+//  unknowns eliminated: their rows and columns become identity rows
+//  (keeps the matrix SPD)
+sparseMatrix reducedMatrix
+(
+    const Foam::UList<Foam::label>& rows,
+    const Foam::UList<Foam::label>& cols,
+    const Foam::UList<Foam::scalar>& values,
+    const Foam::UList<bool>& prescribed
+)
+{
+    using namespace Foam;
+    const label n = prescribed.size();
     std::vector<triplet> entries;
     entries.reserve(values.size() + n);
     forAll(values, e)
     {
-        const label r = rows[e];
-        const label c = cols[e];
-        if (prescribed[r])
+        if (!prescribed[rows[e]] && !prescribed[cols[e]])
         {
-            continue;
+            entries.push_back(triplet(rows[e], cols[e], values[e]));
         }
-        if (prescribed[c])
-        {
-            b[r] -= values[e]*prescribedValue[c];
-            continue;
-        }
-        entries.push_back(triplet(r, c, values[e]));
     }
     for (label k = 0; k < n; ++k)
     {
@@ -132,6 +145,26 @@ void factorise(const sparseMatrix& A, preconditionedCG& cg)
 } // namespace
 
 
+struct Foam::fdm::particleVelocitySystem::factorisation
+{
+    // What the matrix was made from
+    List<label> rows;
+    List<label> cols;
+    List<scalar> values;
+    List<bool> prescribed;
+
+    sparseMatrix A;
+    preconditionedCG cg;
+
+    bool madeFrom(const particleVelocitySystem& s) const
+    {
+        return
+            rows == s.rows_ && cols == s.cols_ && values == s.values_
+         && prescribed == s.prescribed_;
+    }
+};
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::fdm::particleVelocitySystem::particleVelocitySystem
@@ -144,6 +177,39 @@ Foam::fdm::particleVelocitySystem::particleVelocitySystem
     prescribedValue_(nDof*nParticles, Zero),
     prescribed_(nDof*nParticles, false)
 {}
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::fdm::particleVelocitySystem::~particleVelocitySystem()
+{}
+
+
+// * * * * * * * * * * * * * * * Member Operators  * * * * * * * * * * * * * //
+
+Foam::fdm::particleVelocitySystem&
+Foam::fdm::particleVelocitySystem::operator=(particleVelocitySystem&&) =
+    default;
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::fdm::particleVelocitySystem::factorisation&
+Foam::fdm::particleVelocitySystem::factorised() const
+{
+    if (!factorised_ || !factorised_->madeFrom(*this))
+    {
+        factorised_.reset(new factorisation());
+        factorisation& f = *factorised_;
+        f.rows = rows_;
+        f.cols = cols_;
+        f.values = values_;
+        f.prescribed = prescribed_;
+        f.A = reducedMatrix(rows_, cols_, values_, prescribed_);
+        factorise(f.A, f.cg);
+    }
+    return *factorised_;
+}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -230,15 +296,13 @@ Foam::fdm::particleVelocitySystem::solve
 ) const
 {
     const label n = nDof*nParticles_;
-
-    Eigen::VectorXd b(n);
-    const sparseMatrix A
+    const Eigen::VectorXd b
     (
-        eliminatePrescribed
-        (
-            rows_, cols_, values_, rhs_, prescribed_, prescribedValue_, b
-        )
+        reducedRhs(rows_, cols_, values_, rhs_, prescribed_, prescribedValue_)
     );
+    factorisation& f = factorised();
+    const sparseMatrix& A = f.A;
+    preconditionedCG& cg = f.cg;
 
     Eigen::VectorXd x(n);
     for (label i = 0; i < nParticles_; ++i)
@@ -250,10 +314,8 @@ Foam::fdm::particleVelocitySystem::solve
         }
     }
 
-    preconditionedCG cg;
     cg.setTolerance(tolerance);
     cg.setMaxIterations(maxIterations);
-    factorise(A, cg);
 
     // Eigen counts the iterations completed before its convergence test,
     // so a solve converging in its first iteration reports 0; count the

@@ -1,4 +1,5 @@
-// Unit tests for Foam::fdm::particleVelocitySystem (thesis 1, eq 2.43)
+// Unit tests for Foam::fdm::particleVelocitySystem (thesis 1, eq 2.43),
+// including its factorisation kept while the matrix stays the same
 
 #include "particleVelocitySystem.H"
 #include "rigidBodyMoments.H"
@@ -189,5 +190,42 @@ TEST(particleVelocitySystem, solvesWhereTheIncompleteCholeskyBreaksDown)
     {
         EXPECT_LT(mag(U[i] - Uref[i]), 1e-6);
         EXPECT_LT(mag(W[i] - Wref[i]), 1e-6);
+    }
+}
+
+
+TEST(particleVelocitySystem, keptFactorisationFollowsTheMatrix)
+{
+    // Outer iterations: the same matrix with another right-hand side (the
+    // kept factorisation), then a changed matrix (made again); each solve
+    // gives the velocities whose product is its right-hand side
+    fdm::particleVelocitySystem sys(2);
+    const auto assemble = [&](const scalar k, const List<vector>& Uref)
+    {
+        sys.clear();
+        sys.addMass(0, someMoments(1), 10);
+        sys.addMass(1, someMoments(2), 10);
+        addPairCoupling(sys, k);
+        const List<vector> Wref({vector(0.1, 0, 0.2), vector(0, -0.3, 0)});
+        List<vector> f, t;
+        sys.multiply(Uref, Wref, f, t);
+        sys.addRhs(0, f[0], t[0]);
+        sys.addRhs(1, f[1], t[1]);
+    };
+    const List<List<vector>> targets
+    ({
+        {vector(1, 0, 0), vector(0, 2, 0)},
+        {vector(-0.5, 1, 0.3), vector(0.2, 0, -1)}
+    });
+    for (const scalar k : {40.0, 40.0, 400.0, 40.0})
+    {
+        for (const List<vector>& Uref : targets)
+        {
+            assemble(k, Uref);
+            List<vector> U(2, Zero), W(2, Zero);
+            EXPECT_TRUE(sys.solve(1e-13, 200, U, W).converged);
+            EXPECT_LT(mag(U[0] - Uref[0]), 1e-10) << k;
+            EXPECT_LT(mag(U[1] - Uref[1]), 1e-10) << k;
+        }
     }
 }
