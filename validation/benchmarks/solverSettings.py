@@ -143,7 +143,7 @@ SETTINGS["innerBetween"] = (
 # A particle record every N steps (after a betweenRecords part)
 SETTINGS.update(
     ("records%d" % n, (("output.timeSeriesInterval", n, "pp"),))
-    for n in (10, 25))
+    for n in (5, 10, 20, 25, 40))
 # GAMG for U as a part (layerMean+relaxU0.99+gamg)
 SETTINGS["gamg"] = GAMG_U
 # The Anderson history dropped when the residual grows, or kept (parts
