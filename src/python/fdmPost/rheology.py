@@ -173,6 +173,18 @@ def autocorrelation_time(x, dx):
     return dx * (0.5 + rho[1:cut].sum())
 
 
+def core_series(cs, series=None):
+    """Per record: the core eta (eq 2.76), N1/Sigma_xy, N2/Sigma_xy and the
+    contact share of Sigma_xy (eq 4.13), as the columns of an array.
+    `series` is cs.series(), passed when it is at hand already."""
+    g, _, hp, c = cs.series() if series is None else series
+    sxy = cs.eta * g + hp[:, 0, 1] + c[:, 0, 1]
+    part = hp + c
+    return np.column_stack((
+        sxy / (cs.eta * g), (part[:, 0, 0] - part[:, 1, 1]) / sxy,
+        (part[:, 1, 1] - part[:, 2, 2]) / sxy, c[:, 0, 1] / sxy))
+
+
 def core_rheology(cs, start_time, blocks=5, end_time=np.inf, series=None):
     """Time-averaged core rheology over start_time <= t < end_time (eq 2.76,
     eq 4.13): dict of (mean, standard error).  `series` is cs.series(),

@@ -10,7 +10,7 @@ import numpy as np
 import scipy.signal
 
 from fdmPost.rheology import (CouetteSeries, autocorrelation_time,
-                              block_mean, channel_case,
+                              block_mean, channel_case, core_series,
                               mechanical_consistency, slab_volume,
                               symm6_to_tensor)
 
@@ -109,6 +109,20 @@ class Couette(unittest.TestCase):
         # phi_core: two unit spheres inside the core slab of 600
         self.assertAlmostEqual(cs.core_volume_fraction(0),
                                2 * 4 / 3 * np.pi / V, 12)
+
+    def test_core_series_by_hand(self):
+        cs = self.make()
+        V = 100 * 6
+        # Sigma_xy = eta gammaDot + (2 S_xy + 2 contact xy)/V per record
+        sxy = 2.0 * 0.8 + (4 + 1) / V
+        row = core_series(cs)[0]
+        self.assertAlmostEqual(row[0], sxy / (2.0 * 0.8), 12)
+        # xx: contact -1 per particle and the trace -3/3 of the dipole;
+        # yy: the trace only; zz: the same as yy
+        s_xx, s_yy = (2 * (-1.0) + 2 * (-1.0)) / V, 2 * (-1.0) / V
+        self.assertAlmostEqual(row[1], (s_xx - s_yy) / sxy, 12)
+        self.assertAlmostEqual(row[2], 0.0, 12)
+        self.assertAlmostEqual(row[3], (1 / V) / sxy, 12)
 
     def test_profile_integrates_to_mean_fraction(self):
         cs = self.make()

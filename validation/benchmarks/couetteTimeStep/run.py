@@ -50,7 +50,7 @@ sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (foam_set, in_case, snapshot_case,  # noqa
                                 timing_lines, work_lock)
 from fdmPost.rheology import (channel_case, core_rheology,  # noqa
-                              mechanical_consistency)
+                              core_series, mechanical_consistency)
 sys.path.insert(0, os.path.dirname(HERE))
 from solverSettings import (apply_mesh, apply_setting,  # noqa: E402
                             case_suffix, check_setting)
@@ -145,17 +145,6 @@ def run_all(cases, jobs):
                 running.remove((case, proc))
                 if proc.returncode != 0:
                     print("fdmSuspensionFoam failed in %s" % case)
-
-
-def core_series(cs, series):
-    """Per record of particles.h5: the core eta (eq 2.76, per record), N1,
-    N2 and the contact share of Sigma_xy (eq 4.13)."""
-    g, _, hp, c = series
-    sxy = cs.eta * g + hp[:, 0, 1] + c[:, 0, 1]
-    part = hp + c
-    return np.column_stack((
-        sxy / (cs.eta * g), (part[:, 0, 0] - part[:, 1, 1]) / sxy,
-        (part[:, 1, 1] - part[:, 2, 2]) / sxy, c[:, 0, 1] / sxy))
 
 
 def measure(case, start, end, window):

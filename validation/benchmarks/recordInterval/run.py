@@ -37,21 +37,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.environ["FDM_PROJECT_DIR"]
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.rheology import (autocorrelation_time, block_mean,  # noqa
-                              channel_case)
+                              channel_case, core_series)
 
 QUANTITIES = ("etaCore", "N1/Sigma_xy", "N2/Sigma_xy", "contactShare")
 WALL_LAYER = 5      # a1, as runPoint for a gap of 20 a1
-
-
-def core_series(cs):
-    """Per record: core eta (eq 2.76), N1, N2 and the contact share of
-    Sigma_xy (eq 4.13); columns in the order of QUANTITIES."""
-    g, _, hp, c = cs.series()
-    sxy = cs.eta * g + hp[:, 0, 1] + c[:, 0, 1]
-    part = hp + c
-    return np.column_stack((
-        sxy / (cs.eta * g), (part[:, 0, 0] - part[:, 1, 1]) / sxy,
-        (part[:, 1, 1] - part[:, 2, 2]) / sxy, c[:, 0, 1] / sxy))
 
 
 def standard_errors(x, dt):
