@@ -136,18 +136,13 @@ Foam::fdmParticleCloud::hdf5Description() const
     {
         groupNames[g] = groups_[g].name();
     }
-    FixedList<bool, 3> periodic;
-    for (direction d = 0; d < 3; ++d)
-    {
-        periodic[d] = box_.periodic(d);
-    }
     particleHDF5Metadata::description d =
         particleHDF5Metadata::runDescription
         (
             "fdmSuspensionFoam (libfdmParticles)", mesh_.time().globalPath(),
             groupNames, dict_, rhoFluid_*nu_,
             planeWalls(mesh_, "HDF5 description", false).shearRate(),
-            mesh_.bounds(), periodic
+            mesh_.bounds(), box_.periodic()
         );
     d.numbers.insert
     (

@@ -13,16 +13,11 @@ Foam::particleHDF5Metadata::description
 Foam::fdm::demParticleSeries::description(const lubricatedDEM& dem) const
 {
     const periodicBox& box = dem.box();
-    FixedList<bool, 3> periodic;
-    for (direction d = 0; d < 3; ++d)
-    {
-        periodic[d] = box.periodic(d);
-    }
     return particleHDF5Metadata::runDescription
     (
         "lubricatedDEMFoam (libfdmParticles)", runTime_.globalPath(),
         groupNames_, properties_, dem.model().viscosity(), dem.shearRate(),
-        boundBox(box.min(), box.min() + box.span()), periodic
+        boundBox(box.min(), box.min() + box.span()), box.periodic()
     );
 }
 

@@ -29,6 +29,18 @@ TEST(periodicBox, wrapLeavesInsidePointsUnchanged)
 }
 
 
+TEST(periodicBox, periodicFlagsAsGiven)
+{
+    EXPECT_TRUE(box.periodic()[0]);
+    EXPECT_FALSE(box.periodic()[1]);
+    EXPECT_TRUE(box.periodic()[2]);
+    for (direction d = 0; d < 3; ++d)
+    {
+        EXPECT_EQ(box.periodic()[d], box.periodic(d));
+    }
+}
+
+
 TEST(periodicBox, wrapMapsThroughPeriodicFacesOnly)
 {
     // x = 3.5 is 0.5 past the upper face (span 4); x = -1.25 lies 0.25 below
