@@ -1,7 +1,8 @@
 // Unit test of the lagrangian cloud writer on a box mesh: OpenFOAM's own
 // cloud reader gets the positions back, and each field holds the values
 // of the particles in the mesh in input order; a particle outside the mesh
-// is left out of positions and fields alike.
+// is left out of positions and fields alike.  The cells found by the walk
+// from one position to the next are those of OpenFOAM's octree search.
 
 #include "lagrangianCloudWriter.H"
 #include "unitTestCase.H"
@@ -48,4 +49,36 @@ TEST(lagrangianCloudWriter, openFoamReadsThePositionsAndFieldsBack)
     );
     EXPECT_EQ(dRead, scalarList({1.0, 3.0}));
     EXPECT_TRUE(isFile(dir/"U"));
+}
+
+
+TEST(lagrangianCloudWriter, eachParticleInTheCellThatTheOctreeFinds)
+{
+    unitTest::scratchCase sc("lagrangianCloudWriterWalk");
+    autoPtr<fvMesh> mesh = unitTest::boxMesh
+    (
+        sc.runTime(), labelVector(10, 8, 6), 0.1, unitTest::channelSides()
+    );
+    // Scattered positions (a fixed pseudo-random sequence), far apart in
+    // turn, so that each walk crosses many cells
+    List<point> x(40);
+    forAll(x, i)
+    {
+        x[i] = point
+        (
+            0.999*std::fmod(0.37*i + 0.11, 1.0),
+            0.799*std::fmod(0.61*i + 0.05, 1.0),
+            0.599*std::fmod(0.83*i + 0.02, 1.0)
+        );
+    }
+    const lagrangianCloudWriter cloud(*mesh, "particles", x);
+
+    const passiveParticleCloud read(*mesh, "particles");
+    ASSERT_EQ(read.size(), x.size());
+    label i = 0;
+    for (const passiveParticle& p : read)
+    {
+        EXPECT_EQ(p.cell(), mesh->findCell(x[i])) << i;
+        ++i;
+    }
 }
