@@ -1,25 +1,33 @@
 #!/bin/bash
 # The commit before issue 30 built and run side by side with this tree
 # (issue 30, "Must show"): STRAIN (default 0.24) of the sheared phi0 = 0.42
-# suspension from the couetteTimeStep snapshot, at gammaDot deltaT 4e-3,
-# with the old build and its tutorial's settings and with this build and
-# the setting of one couetteTimeStep run, both at once on the 2 cores;
-# prints each solver's Timing line and core-seconds per strain.
+# suspension from a snapshot, at gammaDot deltaT 4e-3, with the old build
+# and its tutorial's settings and with this build and the setting of one
+# couetteTimeStep run, both at once on the 2 cores; prints each solver's
+# Timing line, core-seconds per step and per strain (also per 10^6 cells)
+# and peak resident memory.
 #
-#   ./sideBySide.sh COMMIT NEWRUN [STRAIN]
+#   ./sideBySide.sh COMMIT NEWRUN [STRAIN [SNAPSHOT:T]]
 #
 # COMMIT: e.g. f09ef70 (the last before issue 30), built once in
 # build/sideBySide/COMMIT (a git worktree sharing ThirdParty/).  NEWRUN: a
-# run case of run.py whose constant/ and system/ give the new setting.
+# run case of run.py whose system/fvSolution, system/fvSchemes and
+# constant/particleProperties give the new setting.  SNAPSHOT:T: a case
+# and its written time to start from (default the couetteTimeStep
+# snapshot, 10 x 20 x 10 a1 at strain 1; the thesis box: the frozenCouette
+# snapshot of runPoint 0.42 20 20 0.02, build/benchmarks/frozenCouette/
+# snapshots/phi0.42_20x20_0.02:0.02).
 cd "${0%/*}" || exit 1
 source ../../../etc/bashrc
 commit=${1:?usage: sideBySide.sh COMMIT NEWRUN [STRAIN]}
 newRun=${2:?usage: sideBySide.sh COMMIT NEWRUN [STRAIN]}
 strain=${3:-0.24}
+start=${4:-$FDM_PROJECT_DIR/build/benchmarks/couetteTimeStep/snapshots/phi0.42_10x20x10_1:1}
+snapshot=${start%:*}
+t0=${start##*:}
 work=$FDM_PROJECT_DIR/build/sideBySide
 old=$work/$commit
-snapshot=$FDM_PROJECT_DIR/build/benchmarks/couetteTimeStep/snapshots/phi0.42_10x20x10_1
-[ -d "$snapshot/1" ] || { echo "no snapshot: run ./Allrun first"; exit 1; }
+[ -d "$snapshot/$t0" ] || { echo "no snapshot $snapshot/$t0 (couetteTimeStep: run ./Allrun first)"; exit 1; }
 if [ ! -x "$old/platforms/linux64GccDPInt32Opt/bin/fdmSuspensionFoam" ]
 then
     mkdir -p "$work"
@@ -31,16 +39,21 @@ fi
 # Old: the snapshot with the Couette tutorial's solver and coupling
 # settings of that commit, as its users ran it
 rm -rf "$work/case.old" "$work/case.new"
-cp -r "$snapshot" "$work/case.old"
+mkdir -p "$work/case.old"
+cp -r "$snapshot"/{constant,system} "$snapshot/$t0" "$work/case.old"/
 for f in system/fvSolution constant/particleProperties
 do
     git -C "$FDM_PROJECT_DIR" show "$commit:tutorials/couette/$f" \
         > "$work/case.old/$f" || exit 1
 done
-# New: the same start with the run's dictionaries
+# New: the same start with the run's solver and coupling settings
 mkdir -p "$work/case.new"
-cp -r "$newRun"/{constant,system} "$snapshot/1" "$work/case.new"/
-end=$(awk -v d="$strain" 'BEGIN { print 1 + d }')
+cp -r "$snapshot"/{constant,system} "$snapshot/$t0" "$work/case.new"/
+for f in system/fvSolution system/fvSchemes constant/particleProperties
+do
+    cp "$newRun/$f" "$work/case.new/$f" || exit 1
+done
+end=$(awk -v t="$t0" -v d="$strain" 'BEGIN { print t + d }')
 for c in old new
 do
     dict=$work/case.$c/system/controlDict
@@ -52,14 +65,19 @@ do
 done
 # Each from its case directory: builds before the fix of particlesFile
 # paths cannot run with -case from elsewhere
+timed() { /usr/bin/time -f "maxrss %M kB" -o time.log fdmSuspensionFoam; }
 (cd "$work/case.old" && source "$old/etc/bashrc" > /dev/null 2>&1 &&
- fdmSuspensionFoam > log 2>&1) &
-(cd "$work/case.new" && fdmSuspensionFoam > log 2>&1)
+ timed > log 2>&1) &
+(cd "$work/case.new" && timed > log 2>&1)
 wait
+cells=$(grep -o 'nCells: *[0-9]*' "$work/case.new/constant/polyMesh/owner" |
+    grep -o '[0-9]*$')
 for c in old new
 do
     line=$(grep '^Timing' "$work/case.$c/log" | tail -1)
     echo "$c: $line"
-    echo "$line" | awk -v s="$strain" \
-        '{ printf "    %.0f core-s per strain (the time loop, all of it)\n", $11/s }'
+    echo "$line" | awk -v s="$strain" -v n="$cells" '{
+        printf "    %.2f core-s per step, %.0f per strain, %.0f per strain per 10^6 cells (%d cells; the time loop, all of it)\n",
+            $11/$8, $11/s, $11/s*1e6/n, n }'
+    echo "    peak resident memory $(awk '{ printf "%.2f GiB", $2/1048576 }' "$work/case.$c/time.log")"
 done
