@@ -68,7 +68,7 @@ void Foam::fdmParticleCloud::findOverlapBlocks()
 }
 
 
-void Foam::fdmParticleCloud::assembleSystem
+Foam::scalar Foam::fdmParticleCloud::assembleSystem
 (
     const List<fdm::couplingStencils::supportIntegrals>& sums
 )
@@ -76,19 +76,21 @@ void Foam::fdmParticleCloud::assembleSystem
     // Particle system (eqs 2.43-2.44, smoothed form 2.53), per unit fluid
     // density
     system_.clear();
+    scalar flowLoads2 = 0;
     forAll(state_.position, p)
     {
         const particleGroup& g = groups_[state_.group[p]];
         const fdm::couplingStencils::supportIntegrals& s = sums[p];
 
         system_.addMass(p, moments_[p], 1/alphaLambda_);
+        const vector force = s.fu/alphaLambda_ - s.fl + bodyForce(p);
+        const vector torque = s.tu/alphaLambda_ - s.tl + g.torque()/rhoFluid_;
+        flowLoads2 += magSqr(force) + magSqr(torque);
         system_.addRhs
         (
             p,
-            s.fu/alphaLambda_ - s.fl + bodyForce(p)
-          + contact_.force[p]/rhoFluid_,
-            s.tu/alphaLambda_ - s.tl
-          + (g.torque() + contact_.torque[p])/rhoFluid_
+            force + contact_.force[p]/rhoFluid_,
+            torque + contact_.torque[p]/rhoFluid_
         );
         for (direction d = 0; d < 3; ++d)
         {
@@ -111,6 +113,7 @@ void Foam::fdmParticleCloud::assembleSystem
     );
     subGrid_->addTo(system_, nu_);
     contacts_->addTo(system_, 1/rhoFluid_);
+    return Foam::sqrt(flowLoads2);
 }
 
 
@@ -277,8 +280,11 @@ Foam::scalar Foam::fdmParticleCloud::correct
     fdm::sumOverRanks(sums);
     timings_.integrals += clock.timeIncrement();
 
-    assembleSystem(sums);
-    lastSolve_ = system_.solve(solveTolerance_, 1000, state_.U, state_.Omega);
+    const scalar residualScale = assembleSystem(sums);
+    lastSolve_ = system_.solve
+    (
+        solveTolerance_, 1000, state_.U, state_.Omega, residualScale
+    );
     if (!lastSolve_.converged)
     {
         WarningInFunction

@@ -292,7 +292,8 @@ Foam::fdm::particleVelocitySystem::solve
     const scalar tolerance,
     const label maxIterations,
     List<vector>& U,
-    List<vector>& Omega
+    List<vector>& Omega,
+    const scalar residualScale
 ) const
 {
     const label n = nDof*nParticles_;
@@ -314,7 +315,13 @@ Foam::fdm::particleVelocitySystem::solve
         }
     }
 
-    cg.setTolerance(tolerance);
+    // Eigen's tolerance is relative to the norm of b
+    const scalar bNorm = b.norm();
+    const scalar relativeTolerance =
+        residualScale > 0 && bNorm > 0
+      ? min(tolerance*residualScale/bNorm, tolerance)
+      : tolerance;
+    cg.setTolerance(relativeTolerance);
     cg.setMaxIterations(maxIterations);
 
     // Eigen counts the iterations completed before its convergence test,
@@ -322,7 +329,7 @@ Foam::fdm::particleVelocitySystem::solve
     // iterations actually done (0 only if the guess already satisfies the
     // tolerance)
     const bool guessConverged =
-        (b - A*x).squaredNorm() <= sqr(tolerance)*b.squaredNorm();
+        (b - A*x).squaredNorm() <= sqr(relativeTolerance*bNorm);
 
     x = cg.solveWithGuess(b, x);
 
