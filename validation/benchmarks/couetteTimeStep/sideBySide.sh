@@ -5,7 +5,13 @@
 # and its tutorial's settings and with this build and the setting of one
 # couetteTimeStep run, both at once on the 2 cores; prints each solver's
 # Timing line, core-seconds per step and per strain (also per 10^6 cells)
-# and peak resident memory.
+# and peak resident memory.  A short window holds a share of written steps
+# that depends on where it starts and ends (the last step of a run is
+# always written), so each build's cost per strain is also composed from
+# its Step lines as in a long run: (n - 1) steps between records and one
+# written step per record interval of n steps (output.timeSeriesInterval),
+# the run's last step (written with the fields) left out (builds that
+# print no Step lines, as f09ef70, converge every step alike).
 #
 #   ./sideBySide.sh COMMIT NEWRUN [STRAIN [SNAPSHOT:T]]
 #
@@ -79,5 +85,20 @@ do
     echo "$line" | awk -v s="$strain" -v n="$cells" '{
         printf "    %.2f core-s per step, %.0f per strain, %.0f per strain per 10^6 cells (%d cells; the time loop, all of it)\n",
             $11/$8, $11/s, $11/s*1e6/n, n }'
+    n=$(foamDictionary -entry output.timeSeriesInterval -value \
+        "$work/case.$c/constant/particleProperties" 2>/dev/null || echo 1)
+    grep '^Step' "$work/case.$c/log" | awk -v n="$n" -v c="$cells" '
+        { step[NR] = $2; t[NR] = $(NF - 2); dt = $7 - prev; prev = $7 }
+        END {
+            if (NR < 3) { exit }    # builds without Step lines
+            for (i = 1; i < NR; ++i)
+            {
+                if (n > 1 && step[i] % n == 0) { tr += t[i]; nr++ }
+                else { tb += t[i]; nb++ }
+            }
+            interval = (n > 1 && nr > 0) ? (n - 1)*tb/nb + tr/nr : n*tb/nb
+            printf "    composed: %.0f core-s per strain per 10^6 cells (%d steps between records at %.3g s, %d written at %.3g s, a record every %d steps)\n",
+                interval/(n*dt)*1e6/c, nb, tb/(nb ? nb : 1), nr, tr/(nr ? nr : 1), n
+        }'
     echo "    peak resident memory $(awk '{ printf "%.2f GiB", $2/1048576 }' "$work/case.$c/time.log")"
 done
