@@ -345,7 +345,8 @@ Foam::fdm::particleVelocitySystem::solve
     solveInfo info;
     info.iterations =
         guessConverged ? 0 : min(label(cg.iterations()) + 1, maxIterations);
-    info.relativeResidual = cg.error();
+    // Relative to the scale of the tolerance, so that it compares with it
+    info.relativeResidual = cg.error()*tolerance/relativeTolerance;
     info.converged = (cg.info() == Eigen::Success);
     return info;
 }
