@@ -18,7 +18,7 @@ namespace
 //  once instead of twice (the update is bound by memory traffic)
 void localDots
 (
-    const Foam::UList<Foam::scalarField>& dF,
+    const Foam::UList<Foam::List<float>>& dF,
     const Foam::scalarField& f,
     const bool gramRow,
     const bool withNorm,
@@ -29,17 +29,17 @@ void localDots
     const Foam::label n = f.size();
     const Foam::label block = 1024;
     const Foam::scalar* __restrict__ pf = f.cdata();
-    const Foam::scalar* __restrict__ pl = dF[m - 1].cdata();
+    const float* __restrict__ pl = dF[m - 1].cdata();
     for (Foam::label k0 = 0; k0 < n; k0 += block)
     {
         const Foam::label k1 = Foam::min(k0 + block, n);
         for (Foam::label i = 0; i < m; ++i)
         {
-            const Foam::scalar* __restrict__ pd = dF[i].cdata();
+            const float* __restrict__ pd = dF[i].cdata();
             Foam::scalar row = 0, rhs = 0;
             for (Foam::label k = k0; k < k1; ++k)
             {
-                row += pl[k]*pd[k];
+                row += Foam::scalar(pl[k])*pd[k];
                 rhs += pd[k]*pf[k];
             }
             if (gramRow)
@@ -89,7 +89,7 @@ void Foam::fdm::andersonAcceleration::appendDifferences
 )
 {
     const label n = g.size();
-    scalarField dF, dG;
+    List<float> dF, dG;
     if (dF_.size() == depth_)
     {
         // Drop the oldest difference, reusing its storage, and shift the
@@ -118,8 +118,8 @@ void Foam::fdm::andersonAcceleration::appendDifferences
     for (label k = 0; k < n; ++k)
     {
         const scalar f = g[k] - x[k];
-        dF[k] = f - fPrev_[k];
-        dG[k] = g[k] - gPrev_[k];
+        dF[k] = static_cast<float>(f - fPrev_[k]);
+        dG[k] = static_cast<float>(g[k] - gPrev_[k]);
         fPrev_[k] = f;
         gPrev_[k] = g[k];
     }

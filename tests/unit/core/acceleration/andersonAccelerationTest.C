@@ -140,7 +140,8 @@ TEST(andersonAcceleration, matchesAFullLeastSquaresSolveEveryIteration)
 {
     // Reference: Walker & Ni's type-II update written out directly, the
     // least-squares problem min |f_k - dF gamma| solved from scratch (QR)
-    // with the last m differences at every iteration.  The incremental
+    // with the last m differences, rounded to single precision as the
+    // update stores them, at every iteration.  The incremental
     // Gram matrix, the dropping of the oldest difference at full depth and
     // the reset must give the same iterates; n = 2500 spans several of the
     // blocks in which the update sums its dot products, the last partial.
@@ -173,8 +174,8 @@ TEST(andersonAcceleration, matchesAFullLeastSquaresSolveEveryIteration)
             const Eigen::VectorXd gk = vec(gr), fk = gk - vec(xr);
             if (fPrev.size())
             {
-                dF.push_back(fk - fPrev);
-                dG.push_back(gk - gPrev);
+                dF.push_back((fk - fPrev).cast<float>().cast<double>());
+                dG.push_back((gk - gPrev).cast<float>().cast<double>());
                 if (label(dF.size()) > depth)
                 {
                     dF.erase(dF.begin());
