@@ -12,6 +12,9 @@
 namespace
 {
 
+//- Growth of |f| over one iteration that drops the history (restarts)
+const Foam::scalar restartGrowth = 2;
+
 //- This processor's parts of the new Gram row dF_last . dF_i (gramRow),
 //  of dF_i . f and (withNorm) of f . f, in one pass over the history in
 //  blocks that stay in cache: each stored difference is read from memory
@@ -146,7 +149,8 @@ void Foam::fdm::andersonAcceleration::reset()
 
 bool Foam::fdm::andersonAcceleration::restartIfGrown(const scalar fNorm2)
 {
-    const bool grown = restartOnGrowth_ && fNorm2 > fNorm2Prev_;
+    const bool grown =
+        restartOnGrowth_ && fNorm2 > sqr(restartGrowth)*fNorm2Prev_;
     fNorm2Prev_ = fNorm2;
     if (grown)
     {
