@@ -13,7 +13,7 @@
 # the run's last step (written with the fields) left out (builds that
 # print no Step lines, as f09ef70, converge every step alike).
 #
-#   ./sideBySide.sh COMMIT NEWRUN [STRAIN [SNAPSHOT:T]]
+#   ./sideBySide.sh COMMIT NEWRUN [STRAIN [SNAPSHOT:T [N...]]]
 #
 # COMMIT: e.g. f09ef70 (the last before issue 30), built once in
 # build/sideBySide/COMMIT (a git worktree sharing ThirdParty/).  NEWRUN: a
@@ -22,7 +22,8 @@
 # and its written time to start from (default the couetteTimeStep
 # snapshot, 10 x 20 x 10 a1 at strain 1; the thesis box: the frozenCouette
 # snapshot of runPoint 0.42 20 20 0.02, build/benchmarks/frozenCouette/
-# snapshots/phi0.42_20x20_0.02:0.02).
+# snapshots/phi0.42_20x20_0.02:0.02).  N...: record intervals (steps) to
+# compose the new build's cost at besides its own.
 cd "${0%/*}" || exit 1
 source ../../../etc/bashrc
 commit=${1:?usage: sideBySide.sh COMMIT NEWRUN [STRAIN]}
@@ -31,6 +32,8 @@ strain=${3:-0.24}
 start=${4:-$FDM_PROJECT_DIR/build/benchmarks/couetteTimeStep/snapshots/phi0.42_10x20x10_1:1}
 snapshot=${start%:*}
 t0=${start##*:}
+shift 4 2> /dev/null
+composeAt="$*"
 work=$FDM_PROJECT_DIR/build/sideBySide
 old=$work/$commit
 [ -d "$snapshot/$t0" ] || { echo "no snapshot $snapshot/$t0 (couetteTimeStep: run ./Allrun first)"; exit 1; }
@@ -87,7 +90,11 @@ do
             $11/$8, $11/s, $11/s*1e6/n, n }'
     n=$(foamDictionary -entry output.timeSeriesInterval -value \
         "$work/case.$c/constant/particleProperties" 2>/dev/null || echo 1)
-    grep '^Step' "$work/case.$c/log" | awk -v n="$n" -v c="$cells" '
+    # Written steps are those of the run's own interval n; the cost is
+    # composed at n and (new build) at each interval of composeAt
+    every=$n
+    [ "$c" = new ] && every="$n $composeAt"
+    grep '^Step' "$work/case.$c/log" | awk -v n="$n" -v every="$every" -v c="$cells" '
         { step[NR] = $2; t[NR] = $(NF - 2); dt = $7 - prev; prev = $7 }
         END {
             if (NR < 3) { exit }    # builds without Step lines
@@ -96,9 +103,14 @@ do
                 if (n > 1 && step[i] % n == 0) { tr += t[i]; nr++ }
                 else { tb += t[i]; nb++ }
             }
-            interval = (n > 1 && nr > 0) ? (n - 1)*tb/nb + tr/nr : n*tb/nb
-            printf "    composed: %.0f core-s per strain per 10^6 cells (%d steps between records at %.3g s, %d written at %.3g s, a record every %d steps)\n",
-                interval/(n*dt)*1e6/c, nb, tb/(nb ? nb : 1), nr, tr/(nr ? nr : 1), n
+            k = split(every, at, " ")
+            for (j = 1; j <= k; ++j)
+            {
+                m = at[j]
+                interval = (m > 1 && nr > 0) ? (m - 1)*tb/nb + tr/nr : m*tb/nb
+                printf "    composed: %.0f core-s per strain per 10^6 cells (%d steps between records at %.3g s, %d written at %.3g s, a record every %d steps)\n",
+                    interval/(m*dt)*1e6/c, nb, tb/(nb ? nb : 1), nr, tr/(nr ? nr : 1), m
+            }
         }'
     echo "    peak resident memory $(awk '{ printf "%.2f GiB", $2/1048576 }' "$work/case.$c/time.log")"
 done
