@@ -26,14 +26,14 @@
 # compose the new build's cost at besides its own.
 cd "${0%/*}" || exit 1
 source ../../../etc/bashrc
-commit=${1:?usage: sideBySide.sh COMMIT NEWRUN [STRAIN]}
-newRun=${2:?usage: sideBySide.sh COMMIT NEWRUN [STRAIN]}
+commit=${1:?usage: sideBySide.sh COMMIT NEWRUN [STRAIN [SNAPSHOT:T [N...]]]}
+newRun=${2:?usage: sideBySide.sh COMMIT NEWRUN [STRAIN [SNAPSHOT:T [N...]]]}
 strain=${3:-0.24}
 start=${4:-$FDM_PROJECT_DIR/build/benchmarks/couetteTimeStep/snapshots/phi0.42_10x20x10_1:1}
 snapshot=${start%:*}
 t0=${start##*:}
-shift 4 2> /dev/null
-composeAt="$*"
+composeAt=
+[ $# -gt 4 ] && composeAt="${*:5}"
 work=$FDM_PROJECT_DIR/build/sideBySide
 old=$work/$commit
 [ -d "$snapshot/$t0" ] || { echo "no snapshot $snapshot/$t0 (couetteTimeStep: run ./Allrun first)"; exit 1; }
