@@ -7,6 +7,7 @@
 #include "fvc.H"
 #include "extrapolatedCalculatedFvPatchFields.H"
 #include "gaussGrad.H"
+#include "schemeEntries.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -17,18 +18,6 @@ namespace
 // looks up
 const Foam::word gradName("grad(U)");
 const Foam::word divName("div((nu*dev(T(grad(U)))))");
-
-
-//- Whether a scheme entry reads "Gauss linear"
-bool gaussLinear(Foam::ITstream& scheme)
-{
-    const bool linear =
-        scheme.size() == 2
-     && scheme[0].isWord() && scheme[0].wordToken() == "Gauss"
-     && scheme[1].isWord() && scheme[1].wordToken() == "linear";
-    scheme.rewind();
-    return linear;
-}
 
 
 //- The Gauss linear gradient of U as fvc::grad computes it (linear face
@@ -173,8 +162,8 @@ void sumFaceFluxes(const Foam::volTensorField& s, Foam::vectorField& d)
 bool Foam::fdm::transposeViscousTermIsLinear(const fvMesh& mesh)
 {
     return
-        gaussLinear(mesh.gradScheme(gradName))
-     && gaussLinear(mesh.divScheme(divName));
+        isGaussLinear(mesh.gradScheme(gradName))
+     && isGaussLinear(mesh.divScheme(divName));
 }
 
 

@@ -1,0 +1,97 @@
+// Unit test of fdm::isGaussLinear and fdm::isUncorrectedLaplacian on scheme
+// entries, and of what fdmSuspensionFoam relies on when the Laplacian is
+// uncorrected: its matrix is the same whatever the cell values of the field,
+// so that it can be formed once per step.
+
+#include "schemeEntries.H"
+#include "fvm.H"
+#include "unitTestCase.H"
+#include <gtest/gtest.h>
+
+using namespace Foam;
+
+namespace
+{
+
+ITstream schemeEntry(const string& text)
+{
+    return ITstream("scheme", text);
+}
+
+
+} // End anonymous namespace
+
+
+TEST(schemeEntries, gaussLinear)
+{
+    ITstream linear(schemeEntry("Gauss linear"));
+    ITstream leastSquares(schemeEntry("leastSquares"));
+    ITstream limited(schemeEntry("cellLimited Gauss linear 1"));
+    EXPECT_TRUE(fdm::isGaussLinear(linear));
+    EXPECT_FALSE(fdm::isGaussLinear(leastSquares));
+    EXPECT_FALSE(fdm::isGaussLinear(limited));
+    // The entry can be read again after the query
+    EXPECT_EQ(linear[1].wordToken(), "linear");
+}
+
+
+TEST(schemeEntries, uncorrectedLaplacian)
+{
+    for (const char* text : {"Gauss linear uncorrected", "Gauss linear orthogonal"})
+    {
+        ITstream s(schemeEntry(text));
+        EXPECT_TRUE(fdm::isUncorrectedLaplacian(s)) << text;
+    }
+    for
+    (
+        const char* text
+      : {"Gauss linear corrected", "Gauss linear limited corrected 0.5",
+         "Gauss linear limited 0", "uncorrected"}
+    )
+    {
+        ITstream s(schemeEntry(text));
+        EXPECT_FALSE(fdm::isUncorrectedLaplacian(s)) << text;
+    }
+}
+
+
+TEST(schemeEntries, uncorrectedLaplacianIgnoresCellValues)
+{
+    unitTest::scratchCase sc("schemeEntries");
+    autoPtr<fvMesh> mesh = unitTest::boxMesh
+    (
+        sc.runTime(), labelVector(4, 5, 3), 0.25, unitTest::channelSides()
+    );
+    ITstream& scheme = mesh->laplacianScheme("laplacian(nu,U)");
+    ASSERT_TRUE(fdm::isUncorrectedLaplacian(scheme));
+
+    const dimensionedScalar nu("nu", dimViscosity, 0.37);
+    tmp<volVectorField> tU =
+        unitTest::zeroField<vector>(*mesh, "U", dimVelocity, "fixedValue");
+    volVectorField& U = tU.ref();
+    forAll(U.boundaryField(), patchi)
+    {
+        if (!U.boundaryField()[patchi].coupled())
+        {
+            U.boundaryFieldRef()[patchi] == vector(1, 0, 0.5);
+        }
+    }
+    const fvVectorMatrix first(-fvm::laplacian(nu, U));
+    forAll(U, c)
+    {
+        U[c] = vector(mesh->C()[c].y(), -mesh->C()[c].x(), 3.0);
+    }
+    U.correctBoundaryConditions();
+    const fvVectorMatrix second(-fvm::laplacian(nu, U));
+
+    EXPECT_EQ(first.diag(), second.diag());
+    EXPECT_EQ(first.upper(), second.upper());
+    EXPECT_EQ(first.source(), second.source());
+    forAll(first.internalCoeffs(), patchi)
+    {
+        EXPECT_EQ(first.internalCoeffs()[patchi], second.internalCoeffs()[patchi]);
+        EXPECT_EQ(first.boundaryCoeffs()[patchi], second.boundaryCoeffs()[patchi]);
+    }
+    // The walls' values are in the matrix: it is not trivially empty
+    EXPECT_GT(gMax(mag(first.boundaryCoeffs()[2])), 0);
+}
