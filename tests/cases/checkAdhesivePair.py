@@ -1,0 +1,65 @@
+"""Checks of the adhesivePair case test (see adhesivePair.sh)."""
+
+import sys
+
+import h5py
+import numpy as np
+
+from fdmPost.checks import Checks
+from fdmResistance.pairContact import ContactLaw
+
+# Case data: a = 1, eta = 1, h_r = 5e-3, k_n from the deformation rule
+# (F_el = 6 pi eta a^2 (1/s) at overlap 0.2 h_r), F_adh = 6 pi, gapFloor
+# 1e-5 (a_1 + a_2)/2
+F_ADH = 6 * np.pi
+hr = 5e-3
+LAW = ContactLaw(roughness=hr, friction=0.5, mean_deformation=0.2,
+                 gap_floor=1e-5, lam=1)
+
+
+def last(case):
+    with h5py.File(f"{case}/postProcessing/particles.h5", "r") as f:
+        return {k: f[k][-1] for k in ("position", "velocity",
+                                      "contactForce")}
+
+
+def overlap_under(force):
+    """The overlap where eq 2.57 gives `force`, by bisection."""
+    lo, hi = LAW.floor * (1 + 1e-9), hr
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if LAW.normal(mid)[0] > force else (lo, mid)
+    return hr - 0.5 * (lo + hi)
+
+
+def main(work):
+    c = Checks(width=62)
+    left, right = 0, 1
+
+    # Below the pull-off: F_el - F_adh = -F holds the pair, F_el = 0.1 F_adh
+    load = 0.9 * F_ADH
+    s = last(f"{work}/load0.9")
+    gap = s["position"][right, 0] - s["position"][left, 0] - 2
+    c.check("0.9 F_adh: |overlap / eq 2.57 overlap under F_adh - F - 1|",
+            abs((hr - gap) / overlap_under(F_ADH - load) - 1), 1e-2)
+    c.check("0.9 F_adh: |contact force on each sphere / F - 1|",
+            np.abs(np.abs(s["contactForce"][:, 0]) / load - 1).max(), 1e-2)
+    c.check("0.9 F_adh: contact pulls the spheres together (sign)",
+            max(0.0, -s["contactForce"][left, 0]), 0)
+    c.check("0.9 F_adh: |U_right - U_left| / (F/(6 pi eta a))",
+            np.abs(s["velocity"][right] - s["velocity"][left]).max()
+            / (load / (6 * np.pi)), 1e-4)
+
+    # Above it nothing holds the pair: apart and out of contact
+    s = last(f"{work}/load1.1")
+    gap = s["position"][right, 0] - s["position"][left, 0] - 2
+    c.check("1.1 F_adh: 10 h_r - gap at the end (separated)", 10 * hr - gap, 0)
+    c.check("1.1 F_adh: -(U_right - U_left)_x at the end (moving apart)",
+            s["velocity"][left, 0] - s["velocity"][right, 0], 0)
+    c.check("1.1 F_adh: contact force at the end / F_adh",
+            np.abs(s["contactForce"]).max() / F_ADH, 0)
+    c.finish()
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
