@@ -5,6 +5,7 @@
 
 #include "schemeEntries.H"
 #include "fvm.H"
+#include "IStringStream.H"
 #include "unitTestCase.H"
 #include <gtest/gtest.h>
 
@@ -13,25 +14,30 @@ using namespace Foam;
 namespace
 {
 
-ITstream schemeEntry(const string& text)
+//- A dictionary holding the entry "scheme" with the given text, read as
+//  fvSchemes is (the ITstream constructors differ between OpenFOAM lines)
+dictionary schemeDict(const std::string& text)
 {
-    return ITstream("scheme", text);
+    IStringStream is("scheme " + text + ";");
+    return dictionary(is);
 }
-
 
 } // End anonymous namespace
 
 
 TEST(schemeEntries, gaussLinear)
 {
-    ITstream linear(schemeEntry("Gauss linear"));
-    ITstream leastSquares(schemeEntry("leastSquares"));
-    ITstream limited(schemeEntry("cellLimited Gauss linear 1"));
-    EXPECT_TRUE(fdm::isGaussLinear(linear));
-    EXPECT_FALSE(fdm::isGaussLinear(leastSquares));
-    EXPECT_FALSE(fdm::isGaussLinear(limited));
+    dictionary linear(schemeDict("Gauss linear"));
+    dictionary leastSquares(schemeDict("leastSquares"));
+    dictionary limited(schemeDict("cellLimited Gauss linear 1"));
+    ITstream& linearEntry = linear.lookup("scheme");
+    EXPECT_TRUE(fdm::isGaussLinear(linearEntry));
+    EXPECT_FALSE(fdm::isGaussLinear(leastSquares.lookup("scheme")));
+    EXPECT_FALSE(fdm::isGaussLinear(limited.lookup("scheme")));
     // The entry can be read again after the query
-    EXPECT_EQ(linear[1].wordToken(), "linear");
+    word first, second;
+    linearEntry >> first >> second;
+    EXPECT_EQ(second, "linear");
 }
 
 
@@ -39,8 +45,8 @@ TEST(schemeEntries, uncorrectedLaplacian)
 {
     for (const char* text : {"Gauss linear uncorrected", "Gauss linear orthogonal"})
     {
-        ITstream s(schemeEntry(text));
-        EXPECT_TRUE(fdm::isUncorrectedLaplacian(s)) << text;
+        dictionary d(schemeDict(text));
+        EXPECT_TRUE(fdm::isUncorrectedLaplacian(d.lookup("scheme"))) << text;
     }
     for
     (
@@ -49,8 +55,8 @@ TEST(schemeEntries, uncorrectedLaplacian)
          "Gauss linear limited 0", "uncorrected"}
     )
     {
-        ITstream s(schemeEntry(text));
-        EXPECT_FALSE(fdm::isUncorrectedLaplacian(s)) << text;
+        dictionary d(schemeDict(text));
+        EXPECT_FALSE(fdm::isUncorrectedLaplacian(d.lookup("scheme"))) << text;
     }
 }
 
