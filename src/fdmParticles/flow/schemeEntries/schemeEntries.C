@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "schemeEntries.H"
+#include "volFields.H"
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
@@ -29,6 +30,25 @@ bool Foam::fdm::isUncorrectedLaplacian(ITstream& scheme)
         );
     scheme.rewind();
     return uncorrected;
+}
+
+
+bool Foam::fdm::boundaryCoeffsFromValuesOnly(const volVectorField& U)
+{
+    for (const fvPatchVectorField& pU : U.boundaryField())
+    {
+        if
+        (
+            !pU.coupled()
+         && pU.type() != "fixedValue"
+         && pU.type() != "noSlip"
+         && pU.type() != "empty"
+        )
+        {
+            return false;
+        }
+    }
+    return true;
 }
 
 

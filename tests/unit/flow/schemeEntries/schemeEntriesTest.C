@@ -1,7 +1,8 @@
 // Unit test of fdm::isGaussLinear and fdm::isUncorrectedLaplacian on scheme
 // entries, and of what fdmSuspensionFoam relies on when the Laplacian is
 // uncorrected: its matrix is the same whatever the cell values of the field,
-// so that it can be formed once per step.
+// so that it can be formed once per step, as long as the boundary
+// conditions give their coefficients from the boundary values alone.
 
 #include "schemeEntries.H"
 #include "fvm.H"
@@ -100,4 +101,45 @@ TEST(schemeEntries, uncorrectedLaplacianIgnoresCellValues)
     }
     // The walls' values are in the matrix: it is not trivially empty
     EXPECT_GT(gMax(mag(first.boundaryCoeffs()[2])), 0);
+}
+
+
+TEST(schemeEntries, boundaryCoeffsFromValuesOnly)
+{
+    unitTest::scratchCase sc("schemeEntriesWalls");
+    autoPtr<fvMesh> mesh = unitTest::boxMesh
+    (
+        sc.runTime(), labelVector(4, 5, 3), 0.25, unitTest::channelSides()
+    );
+    const dimensionedScalar nu("nu", dimViscosity, 0.37);
+    tmp<volVectorField> tFixed =
+        unitTest::zeroField<vector>(*mesh, "U", dimVelocity, "fixedValue");
+    tmp<volVectorField> tSecondOrder = unitTest::zeroField<vector>
+    (
+        *mesh, "U", dimVelocity, "secondOrderWallVelocity"
+    );
+    EXPECT_TRUE(fdm::boundaryCoeffsFromValuesOnly(tFixed()));
+    EXPECT_FALSE(fdm::boundaryCoeffsFromValuesOnly(tSecondOrder()));
+
+    // Why: the second-order wall condition takes the cell values into the
+    // Laplacian's boundary coefficients
+    volVectorField& U = tSecondOrder.ref();
+    const fvVectorMatrix first(-fvm::laplacian(nu, U));
+    forAll(U, c)
+    {
+        U[c] = vector(mesh->C()[c].y(), 0, 0);
+    }
+    U.correctBoundaryConditions();
+    const fvVectorMatrix second(-fvm::laplacian(nu, U));
+    scalar change = 0;
+    forAll(first.boundaryCoeffs(), patchi)
+    {
+        change = max
+        (
+            change,
+            gMax(mag(first.boundaryCoeffs()[patchi]
+              - second.boundaryCoeffs()[patchi]))
+        );
+    }
+    EXPECT_GT(change, 0);
 }
