@@ -12,9 +12,18 @@ source "${0%/*}/caseTestFunctions"
 work=$(caseWorkDir adhesivePair)
 for load in 0.9 1.1
 do
-    cloneCase adhesivePair "$work/load$load"
+    # The settlingOnFloor case (box, walls, solvers) with this test's
+    # particles and contact law, to time 2 in steps of 0.05
+    cloneCase settlingOnFloor "$work/load$load"
+    cp "$caseTemplates/adhesivePair/constant/particleProperties" \
+        "$work/load$load/constant/"
     (
         cd "$work/load$load" || exit 1
+        for entry in "endTime 2" "deltaT 0.05" "writeInterval 40"
+        do
+            foamDictionary -entry ${entry% *} -set ${entry#* } \
+                system/controlDict > /dev/null
+        done
         F=$(awk -v f="$load" 'BEGIN { printf "%.10g", f*6*atan2(0, -1) }')
         foamDictionary -entry groups.left.force -set "(-$F 0 0)" \
             constant/particleProperties > /dev/null
