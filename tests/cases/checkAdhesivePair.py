@@ -23,15 +23,6 @@ def last(case):
                                       "contactForce")}
 
 
-def overlap_under(force):
-    """The overlap where eq 2.57 gives `force`, by bisection."""
-    lo, hi = LAW.floor * (1 + 1e-9), hr
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if LAW.normal(mid)[0] > force else (lo, mid)
-    return hr - 0.5 * (lo + hi)
-
-
 def main(work):
     c = Checks(width=62)
     left, right = 0, 1
@@ -41,7 +32,7 @@ def main(work):
     s = last(f"{work}/load0.9")
     gap = s["position"][right, 0] - s["position"][left, 0] - 2
     c.check("0.9 F_adh: |overlap / eq 2.57 overlap under F_adh - F - 1|",
-            abs((hr - gap) / overlap_under(F_ADH - load) - 1), 1e-2)
+            abs((hr - gap) / LAW.overlap_under(F_ADH - load) - 1), 1e-2)
     c.check("0.9 F_adh: |contact force on each sphere / F - 1|",
             np.abs(np.abs(s["contactForce"][:, 0]) / load - 1).max(), 1e-2)
     c.check("0.9 F_adh: contact pulls the spheres together (sign)",

@@ -60,12 +60,8 @@ def main(work):
     Fc, U = s["contactForce"], s["velocity"]
     rest, stick, slide = 0, 1, 2
 
-    # Equilibrium overlap: the gap where eq 2.57 gives W, by bisection
-    lo, hi = floor * (1 + 1e-9), hr
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        lo, hi = (mid, hi) if elastic_force(mid) > W else (lo, mid)
-    expected = hr - 0.5 * (lo + hi)
+    # Equilibrium overlap: where eq 2.57 gives W
+    expected = LAW.overlap_under(W)
 
     # External forces of the three groups (constant/particleProperties)
     Fext = np.array([[0, -W, 0], [0.3 * W, -W, 0], [0.8 * W, -W, 0]])

@@ -42,6 +42,7 @@ import math
 
 import numpy as np
 from scipy.interpolate import CubicSpline
+from scipy.optimize import brentq
 
 from . import pairShear as ps
 
@@ -84,6 +85,15 @@ class ContactLaw:
         delta = self.hr - gap
         return (self.kn * delta**1.5 * (1 - math.exp(10 * (d - 1)))
                 / -math.expm1(-10 * x)), delta
+
+    def overlap_under(self, force):
+        """The overlap delta at which F_el equals `force` > 0 (eq 2.57
+        inverted between the gap floor and h_r): the contact's equilibrium
+        under a steady normal load."""
+        gap = brentq(lambda g: self.normal(g)[0] - force,
+                     self.floor * (1 + 1e-9), self.hr * (1 - 1e-12),
+                     xtol=1e-16, rtol=1e-15, maxiter=500)
+        return self.hr - gap
 
     def truncate(self, Y, n, delta):
         """The slip turned into the tangent plane (length kept) and

@@ -34,6 +34,15 @@ class ContactLawTest(unittest.TestCase):
                                (2 / 7) * f_el / delta * 1e-5, 10)
 
 
+    def test_overlap_under_a_load_inverts_the_law(self):
+        law = pc.ContactLaw(roughness=5e-3, mean_deformation=0.2, lam=1)
+        for force in (1e-3, 0.1, 1.0, 6 * math.pi, 1e4):
+            delta = law.overlap_under(force)
+            self.assertAlmostEqual(law.normal(5e-3 - delta)[0] / force,
+                                   1.0, 9)
+        # The deformation rule: 6 pi eta gammaDot a1^2 at 0.2 h_r
+        self.assertAlmostEqual(law.overlap_under(6 * math.pi) / 1e-3, 1.0, 3)
+
     def test_barrier_matches_the_cpp_golden_table(self):
         # Eq 2.57 as the C++ law evaluates it (tests/unit/contact/
         # contactLawTest.C writes the table): F_el/k_n to 1e-13
