@@ -7,6 +7,13 @@ of section 6.4 (shear stress against the pressure gradient, eq F.6a, and
 the uniformity of Sigma_yy); writes poiseuille.png.
 
     plotPoiseuille.py [case] [--windows 4] [--layer 2] [--phij 0.592]
+                      [--closure SWEEPFIT]
+
+The SBM's closures: Morris & Boulay with phi_m = --phij, or with
+--closure the fit to a Couette sweep (the sweepFit.json that
+tutorials/couette/thesisSweep/plotSweep.py writes: eq 4.12 and
+hat Sigma^c_22 = beta (phi/phi_J)^n, fdmPost.suspensionBalance
+.sweep_poiseuille) with its own phi_J.
 
 Reads postProcessing/particles.h5 (every record; the box, mesh spacing and
 viscosity from its attributes), the reconstructed U and p of the written
@@ -16,7 +23,9 @@ L_y |dP0/dx|/(4 eta) (eq 6.2).
 """
 
 import argparse
+import collections
 import glob
+import json
 import os
 import sys
 
@@ -74,7 +83,23 @@ class Run:
         return (4 / 3 * np.pi * self.cs.a**3).sum() / self.L.prod()
 
 
-def migration(run, layer, phij, ax):
+# The suspension balance model's closures: a name, phi_J, the relative
+# shear viscosity eta_s(phi) and hat Sigma^c_22(phi)
+Closure = collections.namedtuple("Closure", "name phij eta_s sigma22")
+
+
+def closure(path, phij):
+    """Morris & Boulay at phi_m = phij, or the sweep fit in path."""
+    if path is None:
+        return Closure("Morris-Boulay", phij,
+                       *sbm.morris_boulay_poiseuille(phij))
+    with open(path) as f:
+        fit = json.load(f)
+    return Closure("Couette sweep fit", fit["phiJ"],
+                   *sbm.sweep_poiseuille(fit))
+
+
+def migration(run, layer, model, ax):
     """phi(y) per window against eq F.8b in the core, the SBM's domain
     (thesis 6.3.2: the wall layers, where particles order against the wall,
     are left out and the core's own mean enters): from the packing's core
@@ -87,10 +112,10 @@ def migration(run, layer, phij, ax):
     _, phi_start, _ = cs.profiles(nb, [0])
     phi_core = phi_start[core].mean()
     y_edge = (Ly / 2 - layer) / Ly
-    _, sigma22 = sbm.morris_boulay_poiseuille(phij)
+    phij, sigma22 = model.phij, model.sigma22
     bounds = list(zip(run.bounds[:-1], run.bounds[1:]))
     samples = [np.linspace(lo, hi, 5)[1:] for lo, hi in bounds]
-    ys, model = sbm.poiseuille_transient(
+    ys, transient = sbm.poiseuille_transient(
         sigma22, phi_core, Ly, phij,
         sorted({float(s) for w in samples for s in w}), y_max=y_edge)
     print(f"Plane Poiseuille suspension: {len(cs.a)} particles, phi0"
@@ -99,13 +124,13 @@ def migration(run, layer, phij, ax):
           f" = {run.gamma0:g}), migration time (9/8)(L_y/a_bar)^2 ="
           f" {9 / 8 * (Ly / 1.2)**2:.0f}")
     print("  window t*      phi centre (2 a1)   phi outer core    phi wall"
-          " layers   [SBM eq F.8b, Morris-Boulay, phi_J %g]" % phij)
+          f" layers   [SBM eq F.8b, {model.name}, phi_J {phij:g}]")
     fine = np.linspace(layer, Ly - layer, 601)
     phis, sbms = [], []
     for (lo, hi), steps, times in zip(bounds, run.windows, samples):
         _, phi, _ = cs.profiles(nb, steps)
         m = np.mean([np.interp(np.abs(fine - Ly / 2) / Ly, ys,
-                               model[float(s)]) for s in times], axis=0)
+                               transient[float(s)]) for s in times], axis=0)
         m = np.where(core, bin_mean(m, fine, np.clip(run.edges, layer,
                                                        Ly - layer)), np.nan)
         phis.append(phi)
@@ -148,7 +173,7 @@ def migration(run, layer, phij, ax):
     return phis[-1], steady
 
 
-def velocity(run, U, phi, phij, layer, ax):
+def velocity(run, U, phi, model, layer, ax):
     """Blunting (centre over mean velocity, 1.5 for the parabola) against
     eq F.8a with the measured phi(y) (mirror-averaged a1 bins) and two
     viscosity closures: Morris-Boulay and the thesis' Maron-Pierce fit (eq
@@ -165,9 +190,9 @@ def velocity(run, U, phi, phij, layer, ax):
     ax.plot(U, yc, "-", label="suspension (solver U)")
     ax.plot(up, run.yb, "o", ms=4, mfc="none", label="particles (eq 6.4)")
     ax.plot(newtonian, yc, "k--", lw=0.8, label="particle-free parabola")
-    closures = (("Morris-Boulay", sbm.morris_boulay_poiseuille(phij)[0], ":"),
-                ("Maron-Pierce eq 4.12", sbm.maron_pierce_poiseuille(phij),
-                 "-."))
+    closures = ((model.name, model.eta_s, ":"),
+                ("Maron-Pierce eq 4.12",
+                 sbm.maron_pierce_poiseuille(model.phij), "-."))
     # The SBM's own domain, the core (thesis 6.3.2): the rise of the
     # velocity from the core's edges to the centre, the edges' measured
     # velocity (the wall layers' slip and ordering) taken as given
@@ -279,18 +304,23 @@ def main():
     ap.add_argument("--layer", type=float, default=2.0,
                     help="wall layers left out of the SBM, in a1 (thesis:"
                          " about 2.5)")
+    ap.add_argument("--closure", metavar="SWEEPFIT",
+                    help="the SBM closures fitted to a Couette sweep"
+                         " (plotSweep.py's sweepFit.json) instead of"
+                         " Morris-Boulay; its phi_J replaces --phij")
     args = ap.parse_args()
+    model = closure(args.closure, args.phij)
 
     run = Run(args.case, args.windows)
     fig, ax = plt.subplots(1, 4, figsize=(17, 4.2))
-    phi, steady = migration(run, args.layer, args.phij, ax[0])
+    phi, steady = migration(run, args.layer, model, ax[0])
     U = cf.mean_layers(run.case, "U", run.written, run.n)[:, 0]
     gamma = cf.shear_rate_bins(U, run.edges, run.Ly)
     hp, c = run.cs.stress_profiles(run.nb, run.windows[-1])
     write_profiles(run, phi, U, gamma, hp, c, steady)
     x_momentum(run, gamma, hp, c, ax[2])
     y_momentum(run, hp, c, ax[3])
-    velocity(run, U, phi, args.phij, args.layer, ax[1])
+    velocity(run, U, phi, model, args.layer, ax[1])
     fig.tight_layout()
     out = os.path.join(args.case, "poiseuille.png")
     fig.savefig(out, dpi=110)

@@ -187,7 +187,9 @@ def core_series(cs, series=None):
 
 def core_rheology(cs, start_time, blocks=5, end_time=np.inf, series=None):
     """Time-averaged core rheology over start_time <= t < end_time (eq 2.76,
-    eq 4.13): dict of (mean, standard error).  `series` is cs.series(),
+    eq 4.13): dict of (mean, standard error) of gammaDotCore, phiCore,
+    etaCore, contactShare, N1, N2 and contact11, contact22, contact33
+    (Sigma^c_ii/Sigma_12), and the number of records.  `series` is cs.series(),
     passed when it is at hand already."""
     g, phi, hp, c = cs.series() if series is None else series
     keep = (cs.t >= start_time) & (cs.t < end_time)
@@ -205,6 +207,9 @@ def core_rheology(cs, start_time, blocks=5, end_time=np.inf, series=None):
         "contactShare": block_mean(c[:, 0, 1] / sxy, blocks),
         "N1": block_mean((part[:, 0, 0] - part[:, 1, 1]) / sxy, blocks),
         "N2": block_mean((part[:, 1, 1] - part[:, 2, 2]) / sxy, blocks),
+        # The contact normal stresses over Sigma_12 (eq 4.13: hat Sigma^c_ii)
+        **{f"contact{i}{i}": block_mean(c[:, i - 1, i - 1] / sxy, blocks)
+           for i in (1, 2, 3)},
         "records": int(keep.sum()),
     }
     return out

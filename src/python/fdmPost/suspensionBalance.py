@@ -64,6 +64,18 @@ def boyer(phi, component=2, phim=0.585):
     return lam * (r / (1 - r))**2
 
 
+def boyer_friction(phi, phim=0.585, mu1=0.32, mu2=0.7, i0=0.005):
+    """Boyer et al. (2011) with their constants: the viscous number J at
+    phi (phi = phim/(1 + J^(1/2))), the friction coefficient
+    mu(J) = mu1 + (mu2 - mu1)/(1 + I0/J) + J + (5/2) phim J^(1/2) and the
+    relative shear viscosity eta_s = mu/J; the particle pressure over the
+    shear stress is 1/mu (its normal viscosity 1/J is boyer, component 2).
+    Returns (mu, eta_s)."""
+    j = (phim / np.asarray(phi, float) - 1) ** 2
+    mu = mu1 + (mu2 - mu1) / (1 + i0 / j) + j + 2.5 * phim * np.sqrt(j)
+    return mu, mu / j
+
+
 def morris_boulay(phi, component=2, phim=0.68):
     """Morris & Boulay (1999), n = 2 (fdmPost.rheology.morris_boulay_normal,
     the published K_n = 0.75, lambda = 1, 0.8, 0.5; thesis 2, article 3
@@ -236,3 +248,18 @@ def maron_pierce_poiseuille(phi_j, alpha=0.803):
             return np.where(phi < phi_j, maron_pierce(phi, alpha, phi_j),
                             np.inf)
     return eta_s
+
+
+def sweep_poiseuille(fit):
+    """The closures fitted to this project's Couette sweep (fdmPost.sweep
+    .fit_sweep, tutorials/couette/thesisSweep/results/sweepFit.json):
+    eta_s of eq 4.12 with the fitted alpha and phi_J (infinite from phi_J
+    on, as maron_pierce_poiseuille) and hat Sigma^c_22 = beta
+    (phi/phi_J)^n, held at its value at phi_J in the plug."""
+    from fdmPost.sweep import contact_normal_closure
+    phi_j = fit["phiJ"]
+
+    def sigma22(phi):
+        phi_r = np.minimum(np.asarray(phi, float), phi_j) / phi_j
+        return contact_normal_closure(phi_r, fit["beta"], fit["n"])
+    return maron_pierce_poiseuille(phi_j, fit["alpha"]), sigma22

@@ -10,7 +10,8 @@ import numpy as np
 import scipy.signal
 
 from fdmPost.rheology import (CouetteSeries, autocorrelation_time,
-                              block_mean, channel_case, core_series,
+                              block_mean, channel_case, core_rheology,
+                              core_series,
                               mechanical_consistency, slab_volume,
                               symm6_to_tensor)
 
@@ -123,6 +124,20 @@ class Couette(unittest.TestCase):
         self.assertAlmostEqual(row[1], (s_xx - s_yy) / sxy, 12)
         self.assertAlmostEqual(row[2], 0.0, 12)
         self.assertAlmostEqual(row[3], (1 / V) / sxy, 12)
+
+    def test_core_rheology_by_hand(self):
+        cs = self.make()
+        V = 100 * 6
+        sxy = 2.0 * 0.8 + (4 + 1) / V
+        r = core_rheology(cs, 0.0, blocks=3)
+        self.assertEqual(r["records"], 3)
+        self.assertAlmostEqual(r["etaCore"][0], sxy / (2.0 * 0.8), 12)
+        self.assertAlmostEqual(r["contactShare"][0], (1 / V) / sxy, 12)
+        # contact xx -1 on each of the two core particles, yy and zz none
+        self.assertAlmostEqual(r["contact11"][0], (-2 / V) / sxy, 12)
+        self.assertEqual(r["contact22"][0], 0.0)
+        self.assertEqual(r["contact33"][0], 0.0)
+        self.assertAlmostEqual(r["contact11"][1], 0.0, 12)
 
     def test_profile_integrates_to_mean_fraction(self):
         cs = self.make()

@@ -93,6 +93,29 @@ class Poiseuille(unittest.TestCase):
         self.assertLess(np.abs(phi[outside] - c / y[outside]).max(), 1e-9)
         self.assertTrue(np.all(phi[~outside] == phij))
 
+    def test_boyer_friction_by_hand(self):
+        # J = 0.01 at phi = 0.585/1.1: mu = 0.32 + 0.38/1.5 + 0.01
+        # + 2.5 0.585 0.1, eta_s = mu/J, and J -> 1/boyer (eta_n = 1/J)
+        mu, eta_s = sbm.boyer_friction(0.585 / 1.1)
+        ref = 0.32 + 0.38 / 1.5 + 0.01 + 0.14625
+        self.assertAlmostEqual(mu, ref, delta=1e-12)
+        self.assertAlmostEqual(eta_s, 100 * ref, delta=1e-9)
+        self.assertAlmostEqual(sbm.boyer(0.585 / 1.1, 2), 100, delta=1e-9)
+
+    def test_sweep_closure_steady_profile(self):
+        # the fitted power law: |y| Sigma_22(phi(y)) constant outside the
+        # plug (eq F.10), the plug at phi_J, the mean phi kept (eq F.11)
+        fit = {"alpha": 0.8, "phiJ": 0.6, "beta": 0.5, "n": 2.5}
+        eta_s, sigma22 = sbm.sweep_poiseuille(fit)
+        self.assertAlmostEqual(sigma22(0.6), 0.5, delta=1e-12)
+        self.assertAlmostEqual(sigma22(0.7), 0.5, delta=1e-12)
+        y, phi, _ = sbm.poiseuille_profile(sigma22, 0.45, 0.6, n=4001)
+        outside = phi < 0.6 * (1 - 1e-9)
+        c = y[outside] * sigma22(phi[outside])
+        self.assertLess(np.ptp(c) / c.mean(), 1e-6)
+        self.assertAlmostEqual(np.trapz(phi, y) / 0.5, 0.45, delta=1e-3)
+        self.assertTrue(np.isinf(eta_s(0.6)))
+
     def test_newtonian_velocity_is_the_parabola(self):
         # eta_s = 1: u* = 2 (1/4 - y*^2), centre 0.5 (eq F.8a)
         y = np.linspace(0, 0.5, 2001)

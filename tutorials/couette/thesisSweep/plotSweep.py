@@ -1,21 +1,29 @@
 #!/usr/bin/python3
-"""Core rheology of every run/phi*/ case of the Couette sweep against the
-thesis fit and the published closures (thesis 1, section 4.2.2):
+"""Core rheology of the Couette sweep (thesis 1, section 4.2.2, Table 4.7)
+against the thesis' fit and the published closures:
 
   eta_core(phi_core) against Maron-Pierce eta = 0.803/(1 - phi/0.59)^2
-  (eq 4.12, the thesis' own fit to its data);
-  N1/Sigma12, N2/Sigma12 and the contact share against phi/phi_J with the
-  Morris & Boulay (1999) closures as a cross-check (the Badia et al. 2022
-  laws the thesis plots are not reproduced).
+  (eq 4.12, the thesis' own fit) and our own weighted fit of alpha and
+  phi_J with their standard errors;
+  N1/Sigma12, N2/Sigma12, the contact share and the contact normal
+  stresses hat Sigma^c_ii (eq 4.13) against phi_core/phi_J, with Morris &
+  Boulay (1999) and Boyer et al. (2011) as cross-checks (each at its own
+  phi_m: they are drawn against phi/phi_m), and the fitted closure
+  hat Sigma^c_22 = beta (phi/phi_J)^n that fdmPost.suspensionBalance
+  .sweep_poiseuille gives the suspension balance model.
 
-    plotSweep.py [--start STRAIN]
+    plotSweep.py [--runs DIR] [--start STRAIN] [--from-results]
 
-Writes sweep.png and prints a table.  Wall layer 5 a1 for Ly >= 20, else
-Ly/4 (as runPoint).
+Reads every DIR/phi*/ case (default run/), writes the reduced data to
+results/sweep.csv and the fits to results/sweepFit.json, and
+results/sweep.png.  --from-results redraws from results/sweep.csv without
+the runs.  Wall layer 5 a1 for Ly >= 20, else Ly/4 (as runPoint);
+averages from strain 5, or from a third of a run shorter than 15.
 """
 
 import argparse
 import glob
+import json
 import os
 
 import numpy as np
@@ -23,71 +31,137 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from fdmPost import sweep  # noqa: E402
 from fdmPost.rheology import (case_description, core_rheology,  # noqa: E402
-                              couette_case, maron_pierce, morris_boulay)
+                              couette_case, maron_pierce, morris_boulay,
+                              morris_boulay_normal)
+from fdmPost.suspensionBalance import boyer_friction  # noqa: E402
 
-PHI_J = 0.59
+THESIS_ALPHA, THESIS_PHI_J = 0.803, 0.59
 
 
-def main():
-    ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("--start", type=float, default=None,
-                    help="strain where averages start (default: runPoint's)")
-    args = ap.parse_args()
-    here = os.path.dirname(os.path.abspath(__file__))
-
+def rows_from_runs(runs, start_at):
     rows = []
-    for case in sorted(glob.glob(f"{here}/run/phi*")):
+    for case in sorted(glob.glob(f"{runs}/phi*")):
         if not os.path.exists(f"{case}/postProcessing/particles.h5"):
             continue
         run = case_description(case)
-        Ly = run["boxMax"][1] - run["boxMin"][1]
-        cs, gamma0 = couette_case(case, 5.0 if Ly >= 20 else Ly / 4)
+        box = np.asarray(run["boxMax"]) - np.asarray(run["boxMin"])
+        cs, gamma0 = couette_case(case, 5.0 if box[1] >= 20 else box[1] / 4)
         strain = cs.t[-1] * gamma0
-        start = args.start if args.start is not None else (
+        start = start_at if start_at is not None else (
             5.0 if strain >= 15 else strain / 3)
-        r = core_rheology(cs, start / gamma0)
-        rows.append((os.path.basename(case), strain, r))
+        rows.append(sweep.point_row(os.path.basename(case), strain, start,
+                                    box, core_rheology(cs, start / gamma0)))
+    return rows
 
-    if not rows:
-        print("plotSweep: no run/phi*/ case with results (run runPoint first)")
-        return 1
 
-    print(f"{'case':>16} {'strain':>6} {'phi_core':>14} {'eta_core':>14}"
-          f" {'MP fit':>7} {'N1/S12':>14} {'N2/S12':>14} {'contact':>14}")
-    for name, strain, r in rows:
-        f = lambda k: f"{r[k][0]:.3f}+-{r[k][1]:.3f}"  # noqa: E731
-        print(f"{name:>16} {strain:6.1f} {f('phiCore'):>14} {f('etaCore'):>14}"
-              f" {maron_pierce(r['phiCore'][0]):7.3f} {f('N1'):>14}"
-              f" {f('N2'):>14} {f('contactShare'):>14}")
+def print_table(rows, fit):
+    print(f"{'case':>18} {'strain':>6} {'phi_core':>13} {'eta_core':>14}"
+          f" {'eq 4.12':>7} {'dev':>6} {'N1/S12':>13} {'N2/S12':>13}"
+          f" {'contact':>13} {'Sc11/S12':>13} {'Sc22/S12':>13}"
+          f" {'Sc33/S12':>13}")
+    for r in rows:
+        f = lambda k: f"{r[k]:.3f}+-{r[k + 'Err']:.3f}"  # noqa: E731
+        thesis = maron_pierce(r["phiCore"])
+        print(f"{r['case']:>18} {r['strain']:6.1f} {f('phiCore'):>13}"
+              f" {f('etaCore'):>14} {thesis:7.2f}"
+              f" {100 * (r['etaCore'] / thesis - 1):+5.1f}%"
+              + "".join(f" {f(k):>13}" for k in
+                        ("N1", "N2", "contactShare", "contact11",
+                         "contact22", "contact33")))
+    if fit is None:
+        print("fits: fewer than three points")
+        return
+    print(f"Maron-Pierce fit (eq 4.12, {fit['points']} points, weighted by"
+          f" the standard errors): alpha {fit['alpha']:.3f} +-"
+          f" {fit['alphaErr']:.3f}, phi_J {fit['phiJ']:.4f} +-"
+          f" {fit['phiJErr']:.4f} (thesis {THESIS_ALPHA}, {THESIS_PHI_J})")
+    print(f"contact normal closure |Sc22|/S12 = beta (phi/phi_J)^n: beta"
+          f" {fit['beta']:.3f} +- {fit['betaErr']:.3f}, n {fit['n']:.2f}"
+          f" +- {fit['nErr']:.2f}")
 
-    phi = np.linspace(0.05, 0.57, 200)
-    mb_eta, mb_n1, mb_n2 = morris_boulay(phi)
-    fig, ax = plt.subplots(1, 2, figsize=(10, 4))
+
+def draw(rows, fit, path):
+    phi_r = np.array([r["phiCore"] for r in rows]) / THESIS_PHI_J
+    x = np.linspace(0.3, 0.98, 200)
+    fig, ax = plt.subplots(1, 3, figsize=(15, 4.3))
+    phi = x * THESIS_PHI_J
     ax[0].plot(phi, maron_pierce(phi), "k-", label="thesis fit (eq 4.12)")
-    ax[0].plot(phi, mb_eta, "k:", label="Morris & Boulay 1999")
-    for name, strain, r in rows:
-        ax[0].errorbar(r["phiCore"][0], r["etaCore"][0], xerr=r["phiCore"][1],
-                       yerr=r["etaCore"][1], fmt="o", label=name)
-    ax[0].set_yscale("log")
-    ax[0].set_xlabel(r"$\phi_{core}$")
-    ax[0].set_ylabel(r"$\eta_{core}$")
-    ax[0].legend(fontsize=7)
-    x = phi / PHI_J
-    ax[1].plot(x, mb_n1, "C0:", label=r"$N_1/\Sigma_{12}$ Morris & Boulay")
-    ax[1].plot(x, mb_n2, "C1:", label=r"$N_2/\Sigma_{12}$ Morris & Boulay")
-    for k, (key, lab) in enumerate([("N1", r"$N_1/\Sigma_{12}$"),
-                                    ("N2", r"$N_2/\Sigma_{12}$"),
-                                    ("contactShare", r"$\Sigma^c_{12}/\Sigma_{12}$")]):
-        xs = [r["phiCore"][0] / PHI_J for _, _, r in rows]
-        ax[1].errorbar(xs, [r[key][0] for _, _, r in rows],
-                       yerr=[r[key][1] for _, _, r in rows], fmt="os^"[k],
+    if fit is not None:
+        ax[0].plot(phi, maron_pierce(phi, fit["alpha"], fit["phiJ"]), "r--",
+                   label=rf"this sweep: $\alpha$ {fit['alpha']:.2f},"
+                   rf" $\phi_J$ {fit['phiJ']:.3f}")
+    ax[0].plot(x * 0.68, morris_boulay(x * 0.68)[0], "k:",
+               label="Morris & Boulay 1999")
+    ax[0].plot(x * 0.585, boyer_friction(x * 0.585)[1], "k-.",
+               label="Boyer et al. 2011")
+    ax[0].errorbar([r["phiCore"] for r in rows], [r["etaCore"] for r in rows],
+                   xerr=[r["phiCoreErr"] for r in rows],
+                   yerr=[r["etaCoreErr"] for r in rows], fmt="o", color="C3",
+                   label="fdmSuspensionFoam (core)")
+    ax[0].set(yscale="log", xlabel=r"$\phi_{core}$", ylabel=r"$\eta_{core}$",
+              xlim=(0.2, 0.6))
+    eta_mb, n1_mb, n2_mb = morris_boulay(x * 0.68)
+    ax[1].plot(x, n1_mb, "C0:", label=r"$\hat N_1$ Morris & Boulay")
+    ax[1].plot(x, n2_mb, "C1:", label=r"$\hat N_2$ Morris & Boulay")
+    for k, (key, lab) in enumerate([("N1", r"$\hat N_1$"), ("N2", r"$\hat N_2$"),
+                                    ("contactShare", r"$\hat\Sigma^c_{12}$")]):
+        ax[1].errorbar(phi_r, [r[key] for r in rows],
+                       yerr=[r[key + "Err"] for r in rows], fmt="os^"[k],
                        color=f"C{k}", label=lab)
-    ax[1].set_xlabel(r"$\phi_{core}/\phi_J$")
-    ax[1].legend(fontsize=7)
+    mb_n = {i: -morris_boulay_normal(x * 0.68, i) / eta_mb for i in (1, 2, 3)}
+    for k in (1, 2, 3):
+        key = f"contact{k}{k}"
+        ax[2].errorbar(phi_r, [r[key] for r in rows],
+                       yerr=[r[key + "Err"] for r in rows], fmt="os^"[k - 1],
+                       color=f"C{k - 1}", label=rf"$\hat\Sigma^c_{{{k}{k}}}$")
+        ax[2].plot(x, mb_n[k], f"C{k - 1}:")
+    ax[2].plot([], [], "k:", label=r"$-\eta_{ii}/\eta_s$ Morris & Boulay")
+    ax[2].plot(x, -1 / boyer_friction(x * 0.585)[0], "C1-.",
+               label=r"$-1/\mu(J)$ Boyer et al.")
+    if fit is not None:
+        ax[2].plot(x, -sweep.contact_normal_closure(x, fit["beta"], fit["n"]),
+                   "C1--", label=r"fit $-\beta(\phi/\phi_J)^n$")
+    for a in ax[1:]:
+        a.set_xlabel(r"$\phi_{core}/\phi_J$ ($\phi_J$ = 0.59; closures:"
+                     r" $\phi/\phi_m$)")
+        a.axhline(0, color="grey", lw=0.5)
+        a.legend(fontsize=7)
+    ax[0].legend(fontsize=7)
     fig.tight_layout()
-    fig.savefig(f"{here}/sweep.png", dpi=110)
-    print(f"wrote {here}/sweep.png")
+    fig.savefig(path, dpi=110)
+    print(f"wrote {path}")
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("--runs", default=f"{here}/run",
+                    help="folder of the phi*/ cases (default run/)")
+    ap.add_argument("--start", type=float, default=None,
+                    help="strain where averages start (default: runPoint's)")
+    ap.add_argument("--from-results", action="store_true",
+                    help="redraw from results/sweep.csv, without the runs")
+    args = ap.parse_args()
+    table = f"{here}/results/sweep.csv"
+    if args.from_results:
+        rows = sweep.read_points(table)
+    else:
+        rows = rows_from_runs(args.runs, args.start)
+        if not rows:
+            print(f"plotSweep: no {args.runs}/phi*/ case with results"
+                  " (run runPoint or runSweep first)")
+            return 1
+        sweep.write_points(table, rows)
+        print(f"wrote {table}")
+    fit = sweep.fit_sweep(rows)
+    print_table(rows, fit)
+    if fit is not None:
+        with open(f"{here}/results/sweepFit.json", "w") as f:
+            json.dump(fit, f, indent=1)
+    draw(rows, fit, f"{here}/results/sweep.png")
     return 0
 
 
