@@ -1,12 +1,17 @@
 #!/bin/bash
 # Case test (adhesive contacts, thesis 1, chapter 5): two unit spheres in
-# contact in quiescent fluid with the adhesive force F_adh = 6 pi eta a^2
-# (1/s) (adhesiveHertz, eq 5.1), pulled apart along their line of centres
-# by external forces of 0.9 F_adh and 1.1 F_adh, to time 2 with deltaT 0.05.
-# Checks in checkAdhesivePair.py: below the pull-off force (F_adh, where
-# the elastic force vanishes at the edge of the contact) the pair stays
-# bonded at rest, the contact holding the load at the overlap where
-# F_el - F_adh balances it; above it the pair separates.
+# contact with the adhesive force F_adh = 6 pi eta a^2 (1/s)
+# (adhesiveHertz, eq 5.1), in simple shear (walls at y = 0 and 6 moving at
+# -+3: gammaDot = 1) with their line of centres along the vorticity z at
+# mid-height, pulled apart along it by external forces of 0.9 F_adh and
+# 1.1 F_adh, to time 2 with deltaT 0.05.  Along the vorticity the shear
+# flow moves the two spheres neither apart nor together (E_zz = 0) and
+# spins them alike about their line of centres, so the pull-off is the
+# contact law's own.  Checks in checkAdhesivePair.py: below the pull-off
+# force (F_adh, where the elastic force vanishes at the edge of the
+# contact) the pair stays bonded, the contact holding the load at the
+# overlap where F_el - F_adh balances it, while the flow turns it at
+# -gammaDot/2; above it the pair separates.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir adhesivePair)
@@ -25,10 +30,14 @@ do
                 system/controlDict > /dev/null
         done
         F=$(awk -v f="$load" 'BEGIN { printf "%.10g", f*6*atan2(0, -1) }')
-        foamDictionary -entry groups.left.force -set "(-$F 0 0)" \
+        foamDictionary -entry groups.left.force -set "(0 0 -$F)" \
             constant/particleProperties > /dev/null
-        foamDictionary -entry groups.right.force -set "($F 0 0)" \
+        foamDictionary -entry groups.right.force -set "(0 0 $F)" \
             constant/particleProperties > /dev/null
+        foamDictionary -entry boundaryField.floor.value \
+            -set "uniform (-3 0 0)" 0/U > /dev/null
+        foamDictionary -entry boundaryField.lid.value \
+            -set "uniform (3 0 0)" 0/U > /dev/null
         runLogged blockMesh && runLogged fdmSuspensionFoam
     ) || exit 1
 done

@@ -20,33 +20,46 @@ LAW = ContactLaw(roughness=hr, friction=0.5, mean_deformation=0.2,
 def last(case):
     with h5py.File(f"{case}/postProcessing/particles.h5", "r") as f:
         return {k: f[k][-1] for k in ("position", "velocity",
-                                      "contactForce")}
+                                      "angularVelocity", "contactForce")}
 
 
 def main(work):
     c = Checks(width=62)
     left, right = 0, 1
+    z = 2                       # the line of centres, along the vorticity
 
     # Below the pull-off: F_el - F_adh = -F holds the pair, F_el = 0.1 F_adh
     load = 0.9 * F_ADH
     s = last(f"{work}/load0.9")
-    gap = s["position"][right, 0] - s["position"][left, 0] - 2
-    c.check("0.9 F_adh: |overlap / eq 2.57 overlap under F_adh - F - 1|",
-            abs((hr - gap) / LAW.overlap_under(F_ADH - load) - 1), 1e-2)
+    gap = s["position"][right, z] - s["position"][left, z] - 2
+    # The law at the reached state: the overlap where F_el equals F_adh
+    # less the contact's pull.  The pair still creeps apart at the end,
+    # against lubrication, as the elastic force is weak there: 1.5e-7 a in
+    # the last step, 7e-4 of the overlap (the force is taken at the step's
+    # start, the position at its end).  The pull against the load in the
+    # next check.
+    pull = np.abs(s["contactForce"][:, z]).mean()
+    c.check("0.9 F_adh: |overlap / eq 2.57 overlap under F_adh - F_c - 1|",
+            abs((hr - gap) / LAW.overlap_under(F_ADH - pull) - 1), 2e-3)
     c.check("0.9 F_adh: |contact force on each sphere / F - 1|",
-            np.abs(np.abs(s["contactForce"][:, 0]) / load - 1).max(), 1e-2)
+            np.abs(np.abs(s["contactForce"][:, z]) / load - 1).max(), 1e-2)
     c.check("0.9 F_adh: contact pulls the spheres together (sign)",
-            max(0.0, -s["contactForce"][left, 0]), 0)
+            max(0.0, -s["contactForce"][left, z]), 0)
     c.check("0.9 F_adh: |U_right - U_left| / (F/(6 pi eta a))",
             np.abs(s["velocity"][right] - s["velocity"][left]).max()
             / (load / (6 * np.pi)), 1e-4)
+    # Stokes: a sphere (and a pair along the vorticity, spinning about its
+    # own axis) turns with the fluid, -gammaDot/2; the walls 2 a from the
+    # pair change it by a few per cent
+    c.check("0.9 F_adh: |Omega_z/(-gammaDot/2) - 1| of the bonded pair",
+            np.abs(s["angularVelocity"][:, z] / -0.5 - 1).max(), 5e-2)
 
     # Above it nothing holds the pair: apart and out of contact
     s = last(f"{work}/load1.1")
-    gap = s["position"][right, 0] - s["position"][left, 0] - 2
+    gap = s["position"][right, z] - s["position"][left, z] - 2
     c.check("1.1 F_adh: 10 h_r - gap at the end (separated)", 10 * hr - gap, 0)
-    c.check("1.1 F_adh: -(U_right - U_left)_x at the end (moving apart)",
-            s["velocity"][left, 0] - s["velocity"][right, 0], 0)
+    c.check("1.1 F_adh: -(U_right - U_left)_z at the end (moving apart)",
+            s["velocity"][left, z] - s["velocity"][right, z], 0)
     c.check("1.1 F_adh: contact force at the end / F_adh",
             np.abs(s["contactForce"]).max() / F_ADH, 0)
     c.finish()
