@@ -75,7 +75,8 @@ OPENFOAM = {"relaxationFactors", "transportModel", "writePrecision",
 SHARED = ("src/fdmParticles/io/particleList/",
           "src/fdmParticles/io/particleVTK/",
           "src/fdmParticles/control/timeControls/",
-          "src/fdmParticles/io/restart/")
+          "src/fdmParticles/io/restart/",
+          "src/fdmParticles/core/gravity/")
 DEM = ("src/fdmParticles/dem/", "applications/solvers/lubricatedDEMFoam/")
 
 

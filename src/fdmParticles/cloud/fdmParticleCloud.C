@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
+#include "cloudGravity.H"
 #include "pairSearch.H"
 #include "cyclicPolyPatch.H"
 #include "processorCyclicPolyPatch.H"
@@ -281,11 +282,14 @@ Foam::fdmParticleCloud::fdmParticleCloud
     box_ = meshBox();
     cellBins_.reset(new fdm::pointBins(mesh.C().primitiveField(), delta_*4));
 
-    gravity_ = dict_.getOrDefault<vector>("gravity", Zero);
     readCoupling();
     readGroups();
     readParticles();
     checkParticles();
+    gravity_ = fdm::readCloudGravity
+    (
+        dict_, mesh_, groups_, state_, rhoFluid_, rhoFluid_*nu_
+    );
 
     system_ = fdm::particleVelocitySystem(size());
     state_.resizeVelocities();

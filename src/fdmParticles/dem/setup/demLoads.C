@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "demLoads.H"
+#include "settlingGravity.H"
 #include "readBounded.H"
 #include "mathematicalConstants.H"
 
@@ -53,55 +54,6 @@ void Foam::fdm::setDrag(lubricatedDEM& dem, const dictionary& props)
 }
 
 
-Foam::scalar Foam::fdm::shieldsFromAcrivos
-(
-    const fdm::lubricatedDEM& dem,
-    const dictionary& dict,
-    const vector& dir,
-    const boolList& mobile,
-    const scalar aMean
-)
-{
-    const scalar A = fdm::readBounded
-    (
-        dict, "acrivosNumber", VSMALL, GREAT,
-        "Acrivos number (9/2) eta gammaDot/((rho_p - rho_f) g h_0)"
-    );
-    const scalar phiM = fdm::readBounded
-    (
-        dict, "packingFraction", VSMALL, 1,
-        "volume fraction phi_m of the settled bed, h_0 = V/phi_m"
-    );
-    const vector n = cmptMag(dir)/mag(dir);
-    direction up = 0;
-    for (direction d = 1; d < 3; ++d)
-    {
-        up = n[d] > n[up] ? d : up;
-    }
-    if (n[up] < 1 - 1e-9)
-    {
-        FatalIOErrorInFunction(dict)
-            << "acrivosNumber: direction " << dir << " must lie along x, y"
-            << " or z (the settled bed's height is measured along it)"
-            << exit(FatalIOError);
-    }
-    const vector& L = dem.box().span();
-    scalar volume = 0;
-    forAll(mobile, i)
-    {
-        if (mobile[i])
-        {
-            volume += 4.0/3.0*constant::mathematical::pi*pow3(dem.radii()[i]);
-        }
-    }
-    const scalar h0 = volume*L[up]/(L.x()*L.y()*L.z())/phiM;
-    const scalar Sh = A*h0/(4.5*aMean);
-    Info<< "    Acrivos number " << A << ", settled bed height h_0 = V/phi_m "
-        << h0 << " (phi_m " << phiM << "): Shields number " << Sh << nl;
-    return Sh;
-}
-
-
 void Foam::fdm::setGravity
 (
     fdm::lubricatedDEM& dem,
@@ -120,50 +72,24 @@ void Foam::fdm::setGravity
         props, "fluidDensity", 0, 0, rho,
         "fluid density rho_f (buoyancy), below the particle density"
     );
-    scalar aMean = 0;
+    scalar aMean = 0, volume = 0;
     label nMobile = 0;
     forAll(mobile, i)
     {
         if (mobile[i])
         {
             aMean += dem.radii()[i];
+            volume += 4.0/3.0*constant::mathematical::pi*pow3(dem.radii()[i]);
             ++nMobile;
         }
     }
     aMean /= max(nMobile, label(1));
-
-    vector g(Zero);
-    if (dict.found("shieldsNumber") || dict.found("acrivosNumber"))
+    const fdm::settlingScales scales
     {
-        const vector dir = dict.get<vector>("direction");
-        if (dict.found("shieldsNumber") && dict.found("acrivosNumber"))
-        {
-            FatalIOErrorInFunction(dict)
-                << "give shieldsNumber or acrivosNumber, not both"
-                << exit(FatalIOError);
-        }
-        if (mag(dir) < VSMALL || mag(dem.shearRate()) < VSMALL)
-        {
-            FatalIOErrorInFunction(dict)
-                << "shieldsNumber and acrivosNumber need a non-zero"
-                << " direction and a sheared cell (cell{shearRate}); give"
-                << " the acceleration instead: value (0 -9.81 0);"
-                << exit(FatalIOError);
-        }
-        const scalar Sh = dict.found("shieldsNumber")
-          ? fdm::readBounded
-            (
-                dict, "shieldsNumber", VSMALL, GREAT,
-                "Shields number eta gammaDot/((rho_p - rho_f) g a)"
-            )
-          : shieldsFromAcrivos(dem, dict, dir, mobile, aMean);
-        g = dir/mag(dir)*dem.model().viscosity()*mag(dem.shearRate())
-           /((rho - rhoF)*aMean*Sh);
-    }
-    else
-    {
-        g = dict.get<vector>("value");
-    }
+        dem.model().viscosity(), mag(dem.shearRate()), rho - rhoF, aMean,
+        volume, dem.box().span()
+    };
+    const vector g = fdm::readSettlingGravity(dict, scales);
 
     forAll(mobile, i)
     {
@@ -176,8 +102,7 @@ void Foam::fdm::setGravity
     Info<< "    gravity " << g << ", density difference " << rho - rhoF;
     if (gammaDot > 0)
     {
-        Info<< ", Shields number "
-            << dem.model().viscosity()*gammaDot/((rho - rhoF)*mag(g)*aMean)
+        Info<< ", Shields number " << fdm::shieldsOfGravity(scales, mag(g))
             << ", inertial number gammaDot sqrt(a/g) "
             << gammaDot*std::sqrt(aMean/max(mag(g), VSMALL));
     }

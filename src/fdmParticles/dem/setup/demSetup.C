@@ -57,13 +57,6 @@ void Foam::fdm::checkDEMKeywords(const dictionary& props)
     {
         {"cell", {"min", "max", "shearRate", "open"}},
         {"drag", {"viscosity", "isolatedViscosity", "isolatedBelow"}},
-        {
-            "gravity",
-            {
-                "direction", "shieldsNumber", "acrivosNumber",
-                "packingFraction", "value"
-            }
-        },
         {"pressureWall", {"group", "pressure", "damping"}},
         {"neighbours", {"selection", "interval"}},
         {"output", {"interval", "track", "vtkInterval"}}

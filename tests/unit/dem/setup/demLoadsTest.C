@@ -177,45 +177,6 @@ TEST(demLoads, weightFromTheShieldsNumber)
 }
 
 
-TEST(demLoads, shieldsNumberFromTheAcrivosNumber)
-{
-    // One mobile sphere in a 20 x 20 floor: V = (4/3 pi)/400 per unit area,
-    // h_0 = V/phi_m, Sh = A h_0/(4.5 a)
-    fdm::lubricatedDEM dem(twoSpheres(1));
-    const boolList mobile({true, false});
-    const scalar Sh = fdm::shieldsFromAcrivos
-    (
-        dem,
-        parse("acrivosNumber 0.9; packingFraction 0.5;"),
-        vector(0, -1, 0),
-        mobile,
-        1
-    );
-    const scalar h0 = 4.0/3.0*pi/400/0.5;
-    EXPECT_NEAR(Sh, 0.9*h0/4.5, 1e-14);
-
-    // Gravity off the axes has no bed height
-    EXPECT_NE
-    (
-        errorOf
-        (
-            [&]
-            {
-                fdm::shieldsFromAcrivos
-                (
-                    dem,
-                    parse("acrivosNumber 0.9; packingFraction 0.5;"),
-                    vector(0, -1, 1),
-                    mobile,
-                    1
-                );
-            }
-        ).find("must lie along"),
-        std::string::npos
-    );
-}
-
-
 TEST(demLoads, pressureWallNeedsFixedSpheresAndOneOpenDirection)
 {
     fdm::lubricatedDEM dem(twoSpheres(1));
