@@ -36,7 +36,7 @@ from fdmPost.report import write_markdown  # noqa: E402
 from fdmPost import suspensionBalance as sbm  # noqa: E402
 from fdmPost.demRheology import averages, dem_state, state_files  # noqa: E402
 
-PHI_TOP = 0.05
+PHI_TOP = 0.05   # fdmPost.suspensionBalance.top_height
 
 
 def read_case(case, start, dz):
@@ -111,23 +111,11 @@ def bulk_shear_rate(r):
     over the bins with phi > 0.1 between 2 a above the floor and 2 a below
     the top (article 3 assumes it uniform and equal to the imposed one)."""
     z, phi = r["z"], r["phi"]
-    keep = (phi > 0.1) & (z > 2) & (z < top_height(z, phi) - 2)
+    keep = (phi > 0.1) & (z > 2) & (z < sbm.top_height(z, phi) - 2)
     if r["component"] != 2 or keep.sum() < 3:
         return r["gamma"]     # Lees-Edwards across y imposes it exactly
     slope = np.polyfit(z[keep], r["slip"][keep], 1)[0]
     return r["gamma"] * (1 + slope)
-
-
-def top_height(z, phi):
-    """First height above the densest bin where phi drops below PHI_TOP."""
-    k0 = int(np.argmax(phi))
-    k = k0 + int(np.argmax(phi[k0:] < PHI_TOP))
-    f = (phi[k - 1] - PHI_TOP) / (phi[k - 1] - phi[k])
-    return z[k - 1] + f * (z[k] - z[k - 1])
-
-
-def centroid(z, phi):
-    return np.trapz(z * phi, z) / np.trapz(phi, z)
 
 
 def main():
@@ -181,15 +169,17 @@ def main():
         acrivos = 4.5 * sh / h0
         row = (f"| {r['sh']:g} | {rate:.3f} | {sh:.3f} | {acrivos:.3f}"
                f" | {r['t0']:g}-{r['t1']:g}"
-               f" | {r['volume']:.2f} | {top_height(r['z'], r['phi']):.2f}"
-               f" | {centroid(r['z'], r['phi']):.2f} |")
+               f" | {r['volume']:.2f}"
+               f" | {sbm.top_height(r['z'], r['phi']):.2f}"
+               f" | {sbm.centroid(r['z'], r['phi']):.2f} |")
         line, = ax[0].plot(r["phi"], r["z"], "o", ms=3,
                            label=f"DEM Sh = {r['sh']:g}")
         for (name, eta), style in zip(sbm.CLOSURES.items(),
                                       ("-", "--", ":", "-.")):
             zm, pm, _ = sbm.resuspension_profile(eta, sh, r["volume"],
                                                  r["component"])
-            row += (f" {top_height(zm, pm):.2f} | {centroid(zm, pm):.2f} |")
+            row += (f" {sbm.top_height(zm, pm):.2f} |"
+                    f" {sbm.centroid(zm, pm):.2f} |")
             ax[0].plot(pm, zm, style, color=line.get_color(), lw=1,
                        label=f"SBM {name}" if r is runs[0] else None)
         lines.append(row)
@@ -204,7 +194,8 @@ def main():
         # average it over 2 a (a sphere's extent) before comparing
         n = max(1, int(round(2 / r["dz"])))
         stress = np.convolve(-r["syy"], np.ones(n) / n, mode="same")
-        bulk = (r["z"] > 2) & (r["z"] < top_height(r["z"], r["phi"]) - 2)
+        top = sbm.top_height(r["z"], r["phi"])
+        bulk = (r["z"] > 2) & (r["z"] < top - 2)
         err = np.abs(stress[bulk] - load[bulk]).max() / load[bulk].max()
         balance_err.append((r["sh"], err, load[bulk].max(),
                             np.abs(drag[bulk]).max() / load[bulk].max()))
@@ -218,7 +209,7 @@ def main():
                    color=line.get_color(), label=f"Sh = {r['sh']:g}")
 
         keep = bulk & (r["phi"] > 0.3 * phim) & (
-            r["z"] < top_height(r["z"], r["phi"]) - 5)
+            r["z"] < sbm.top_height(r["z"], r["phi"]) - 5)
         # eta_ii of the profile, binned by phi/phi_m (width 0.05)
         x, y = r["phi"][keep] / phim, weight[keep] / rate
         bins = np.round(x / 0.05) * 0.05

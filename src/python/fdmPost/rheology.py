@@ -187,7 +187,8 @@ def core_series(cs, series=None):
 
 def core_rheology(cs, start_time, blocks=5, end_time=np.inf, series=None):
     """Time-averaged core rheology over start_time <= t < end_time (eq 2.76,
-    eq 4.13): dict of (mean, standard error) of gammaDotCore, phiCore,
+    eq 4.13): dict of (mean, standard error) of gammaDotCore, shearStress
+    (Sigma_12 of eq 2.72), phiCore,
     etaCore, contactShare, N1, N2 and contact11, contact22, contact33
     (Sigma^c_ii/Sigma_12), and the number of records.  `series` is cs.series(),
     passed when it is at hand already."""
@@ -200,6 +201,7 @@ def core_rheology(cs, start_time, blocks=5, end_time=np.inf, series=None):
     part = hp + c
     out = {
         "gammaDotCore": block_mean(g, blocks),
+        "shearStress": block_mean(sxy, blocks),
         "phiCore": block_mean(phi, blocks),
         # eq 2.76 with the time averages of stress and rate
         "etaCore": (1 + (np.mean(hp[:, 0, 1] + c[:, 0, 1])) / (cs.eta * gm),
@@ -287,10 +289,14 @@ def _description_from_dictionaries(case):
     particles.h5 predates the run attributes: Lx Ly Lz of
     system/blockMeshDict (box from the origin), rho nu of
     constant/transportProperties, topWall and bottomWall speeds of 0/U."""
-    mesh = open(f"{case}/system/blockMeshDict").read()
+    def read(name):
+        with open(f"{case}/{name}") as f:
+            return f.read()
+
+    mesh = read("system/blockMeshDict")
     L = np.array([number(mesh, k) for k in ("Lx", "Ly", "Lz")])
-    transport = open(f"{case}/constant/transportProperties").read()
-    U0 = open(f"{case}/0/U").read()
+    transport = read("constant/transportProperties")
+    U0 = read("0/U")
 
     def speed(patch):
         block = U0[U0.index(patch):]

@@ -130,6 +130,21 @@ def suspension_height(eta, sh, volume, component=2):
     return z[-1]
 
 
+def top_height(z, phi, phi_top=0.05):
+    """Height of a suspension: the first z above the densest sample where
+    phi drops below phi_top, linearly between samples (z increasing)."""
+    z, phi = np.asarray(z, float), np.asarray(phi, float)
+    k0 = int(np.argmax(phi))
+    k = k0 + int(np.argmax(phi[k0:] < phi_top))
+    f = (phi[k - 1] - phi_top) / (phi[k - 1] - phi[k])
+    return z[k - 1] + f * (z[k] - z[k - 1])
+
+
+def centroid(z, phi):
+    """Mean height of the particle volume of a profile phi(z)."""
+    return np.trapz(z * phi, z) / np.trapz(phi, z)
+
+
 def normal_viscosity_from_profile(z, phi, sh):
     """Eq 6: eta_ii(z) = (1/Sh) int_z^top phi dz' by the trapezoidal rule
     on the samples (z increasing, phi -> 0 at the top)."""

@@ -132,6 +132,7 @@ class Couette(unittest.TestCase):
         r = core_rheology(cs, 0.0, blocks=3)
         self.assertEqual(r["records"], 3)
         self.assertAlmostEqual(r["etaCore"][0], sxy / (2.0 * 0.8), 12)
+        self.assertAlmostEqual(r["shearStress"][0], sxy, 12)
         self.assertAlmostEqual(r["contactShare"][0], (1 / V) / sxy, 12)
         # contact xx -1 on each of the two core particles, yy and zz none
         self.assertAlmostEqual(r["contact11"][0], (-2 / V) / sxy, 12)

@@ -116,6 +116,13 @@ class Poiseuille(unittest.TestCase):
         self.assertAlmostEqual(np.trapz(phi, y) / 0.5, 0.45, delta=1e-3)
         self.assertTrue(np.isinf(eta_s(0.6)))
 
+    def test_height_and_centroid_of_a_linear_profile(self):
+        # phi = 0.5 (1 - z/4): phi = 0.05 at z = 3.6, centroid 4/3
+        z = np.linspace(0, 5, 51)
+        phi = np.maximum(0.5 * (1 - z / 4), 0)
+        self.assertAlmostEqual(sbm.top_height(z, phi), 3.6, delta=1e-12)
+        self.assertAlmostEqual(sbm.centroid(z, phi), 4 / 3, delta=1e-3)
+
     def test_newtonian_velocity_is_the_parabola(self):
         # eta_s = 1: u* = 2 (1/4 - y*^2), centre 0.5 (eq F.8a)
         y = np.linspace(0, 0.5, 2001)

@@ -105,7 +105,8 @@ def draw(rows, fit, path):
     eta_mb, n1_mb, n2_mb = morris_boulay(x * 0.68)
     ax[1].plot(x, n1_mb, "C0:", label=r"$\hat N_1$ Morris & Boulay")
     ax[1].plot(x, n2_mb, "C1:", label=r"$\hat N_2$ Morris & Boulay")
-    for k, (key, lab) in enumerate([("N1", r"$\hat N_1$"), ("N2", r"$\hat N_2$"),
+    for k, (key, lab) in enumerate([("N1", r"$\hat N_1$"),
+                                    ("N2", r"$\hat N_2$"),
                                     ("contactShare", r"$\hat\Sigma^c_{12}$")]):
         ax[1].errorbar(phi_r, [r[key] for r in rows],
                        yerr=[r[key + "Err"] for r in rows], fmt="os^"[k],
