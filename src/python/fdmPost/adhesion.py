@@ -49,10 +49,12 @@ def adhesion_point(rheology, eta, gamma0, g0, phi_wall=None):
         state = "depletion"
     if rate < BANDING_RATE:
         state = "banding"
-    sigma = eta_app / g0 if g0 > 0 else np.inf
+    # eq 5.4; without adhesion sigma* is infinite (its error undefined)
+    sigma = (eta_app / g0, s12_err / (eta * gamma0 * g0)) if g0 > 0 \
+        else (np.inf, np.nan)
     eta_core = rheology["etaCore"] if state != "banding" else (np.nan, np.nan)
     return {"etaApp": (eta_app, s12_err / (eta * gamma0)),
-            "sigmaStar": (sigma, sigma * s12_err / s12),
+            "sigmaStar": sigma,
             "gammaRatio": rate, "phiCore": rheology["phiCore"],
             "etaCore": eta_core, "state": state, "adhesionNumber": g0}
 
