@@ -1,7 +1,8 @@
 #!/bin/bash
 # Case test (no mesh, seconds): the restart guard removeIncompleteWrites of
 # etc/caseFunctions removes a write that a kill cut short (serial and
-# decomposed) and keeps whole writes (checkCaseFunctions.py).
+# decomposed) and keeps whole writes; setAdhesion sets the adhesive
+# contact law (checkCaseFunctions.py).
 source "${0%/*}/caseTestFunctions"
 
 "$FDM_PYTHON" "$caseTemplates/checkCaseFunctions.py" -v 2>&1 | tail -n 8

@@ -1,7 +1,10 @@
-"""Unit tests of the restart guard removeIncompleteWrites (etc/caseFunctions):
-a write cut short by a kill is removed, whole writes are kept."""
+"""Unit tests of etc/caseFunctions: the restart guard removeIncompleteWrites
+(a write cut short by a kill is removed, whole writes are kept) and
+setAdhesion (the adhesive contact law set in a copy of the Couette
+tutorial's particleProperties, read back with foamDictionary)."""
 
 import os
+import shutil
 import subprocess
 import tempfile
 import unittest
@@ -74,6 +77,32 @@ class RemoveIncompleteWrites(unittest.TestCase):
         guard(case, 0)
         self.assertFalse(os.path.exists(os.path.join(case, "10")))
         self.assertTrue(os.path.exists(os.path.join(case, "1.5", "U")))
+
+
+class SetAdhesion(unittest.TestCase):
+
+    def test_sets_the_law_the_number_and_the_stiffness(self):
+        tmp = tempfile.TemporaryDirectory()
+        self.addCleanup(tmp.cleanup)
+        os.makedirs(os.path.join(tmp.name, "constant"))
+        shutil.copy(os.path.join(os.path.dirname(FUNCTIONS), os.pardir,
+                                 "tutorials", "couette", "constant",
+                                 "particleProperties"),
+                    os.path.join(tmp.name, "constant"))
+        # OpenFOAM warns on standard output when PWD is not the cwd
+        env = dict(os.environ, PWD=tmp.name)
+        subprocess.run(["bash", "-c", '. "$0" && setAdhesion 2.5 0.05',
+                        FUNCTIONS], cwd=tmp.name, env=env, check=True)
+
+        def entry(key):
+            return subprocess.run(
+                ["foamDictionary", "-entry", "contact." + key, "-value",
+                 "constant/particleProperties"], cwd=tmp.name, env=env,
+                check=True, capture_output=True, text=True).stdout.strip()
+        self.assertEqual(entry("model"), "adhesiveHertz")
+        self.assertEqual(entry("adhesionNumber"), "2.5")
+        self.assertEqual(entry("meanDeformation"), "0.05")
+        self.assertEqual(entry("friction"), "0.5")
 
 
 if __name__ == "__main__":
