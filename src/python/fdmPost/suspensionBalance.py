@@ -101,6 +101,27 @@ CLOSURES = {"Chevremont (eq 9)": chevremont, "Boyer": boyer,
             "Zarraga": zarraga, "Morris-Boulay": morris_boulay}
 
 
+def boyer_ratio(phi, component=2, phim=0.585):
+    """Particle normal stress over shear stress of Boyer et al. (2011),
+    1/mu(J) (boyer_friction), lambda_33 = 0.6 of it: the closure of a bed
+    sheared at imposed stress, finite (1/mu_1) at phim."""
+    return {2: 1.0, 3: 0.6}[component] / boyer_friction(phi, phim)[0]
+
+
+def morris_boulay_ratio(phi, component=2, phim=0.68):
+    """eta_ii/eta_s of Morris & Boulay (1999), finite (lambda_i K_n/K_s)
+    at phim."""
+    return morris_boulay(phi, component, phim) \
+        / morris_boulay_shear(phi, phim)[0]
+
+
+# Closures of the ratio Sigma^p_ii/Sigma_12: with the shear stress tau
+# imposed (a bed sheared by the fluid above it) the balance of eq 3 reads
+# phi/Sh_tau = -(d R/d phi)(d phi/d z), Sh_tau = tau/(drho g a), which
+# resuspension_profile solves with R in place of eta_ii and Sh_tau for Sh
+RATIO_CLOSURES = {"Boyer": boyer_ratio, "Morris-Boulay": morris_boulay_ratio}
+
+
 def _derivative(eta, phi, component, h=1e-7):
     return (eta(phi + h, component) - eta(phi - h, component)) / (2 * h)
 

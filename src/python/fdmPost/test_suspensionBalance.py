@@ -123,6 +123,21 @@ class Poiseuille(unittest.TestCase):
         self.assertAlmostEqual(sbm.top_height(z, phi), 3.6, delta=1e-12)
         self.assertAlmostEqual(sbm.centroid(z, phi), 4 / 3, delta=1e-3)
 
+    def test_ratio_closures(self):
+        # Boyer: 1/mu at J = 0.01 (phi = 0.585/1.1), 1/mu_1 at phim;
+        # Morris-Boulay: lambda_2 K_n/K_s = 6 at phim
+        mu = 0.32 + 0.38 / 1.5 + 0.01 + 0.14625
+        self.assertAlmostEqual(sbm.boyer_ratio(0.585 / 1.1), 1 / mu, 12)
+        self.assertAlmostEqual(sbm.boyer_ratio(0.585 * (1 - 1e-9)),
+                               1 / 0.32, 4)
+        self.assertAlmostEqual(sbm.morris_boulay_ratio(0.68 * (1 - 1e-9)),
+                               0.8 * 0.75 / 0.1, 4)
+        # imposed stress: the profile of eq 3 with R for eta_ii holds
+        # Sh_tau R(phi_b) = V on the floor
+        z, phi, phib = sbm.resuspension_profile(sbm.boyer_ratio, 3.0, 1.8)
+        self.assertAlmostEqual(3.0 * sbm.boyer_ratio(phib), 1.8, 9)
+        self.assertAlmostEqual(np.trapz(phi, z), 1.8, delta=1e-4)
+
     def test_newtonian_velocity_is_the_parabola(self):
         # eta_s = 1: u* = 2 (1/4 - y*^2), centre 0.5 (eq F.8a)
         y = np.linspace(0, 0.5, 2001)
