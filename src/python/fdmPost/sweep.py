@@ -104,9 +104,13 @@ def fit_sweep(rows):
     if mp is None:
         return None
     (alpha, phi_j), cov = mp
-    cn = fit_contact_normal(phi / phi_j, [-r["contact22"] for r in rows],
-                            [r["contact22Err"] for r in rows])
-    (beta, n), cov_n = cn
+    # Compressive contact normal stress only (a dilute point may have none)
+    s22 = np.array([-r["contact22"] for r in rows])
+    err = np.array([r["contact22Err"] for r in rows])
+    keep = s22 > 0
+    cn = fit_contact_normal(phi[keep] / phi_j, s22[keep], err[keep])
+    (beta, n), cov_n = cn if cn is not None else \
+        ((np.nan, np.nan), np.full((2, 2), np.nan))
     return {"alpha": alpha, "alphaErr": np.sqrt(cov[0, 0]),
             "phiJ": phi_j, "phiJErr": np.sqrt(cov[1, 1]),
             "maronPierceCovariance": cov.tolist(),
