@@ -188,10 +188,10 @@ def core_series(cs, series=None):
 def core_rheology(cs, start_time, blocks=5, end_time=np.inf, series=None):
     """Time-averaged core rheology over start_time <= t < end_time (eq 2.76,
     eq 4.13): dict of (mean, standard error) of gammaDotCore, shearStress
-    (Sigma_12 of eq 2.72), phiCore,
-    etaCore, contactShare, N1, N2 and contact11, contact22, contact33
-    (Sigma^c_ii/Sigma_12), and the number of records.  `series` is cs.series(),
-    passed when it is at hand already."""
+    (Sigma_12 of eq 2.72), phiCore, etaCore, contactShare, N1, N2 and
+    contact11, contact22, contact33 (Sigma^c_ii/Sigma_12), and the number
+    of records.  `series` is cs.series(), passed when it is at hand
+    already."""
     g, phi, hp, c = cs.series() if series is None else series
     keep = (cs.t >= start_time) & (cs.t < end_time)
     g, phi, hp, c = g[keep], phi[keep], hp[keep], c[keep]
