@@ -21,13 +21,13 @@ import json
 import os
 import re
 
-import numpy as np
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from fdmPost.adhesion import adhesion_case, jamming_fraction  # noqa: E402
 from fdmPost.rheology import case_description  # noqa: E402
+from fdmPost.sweep import wall_layer  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 FIELDS = ("case", "phi0", "adhesionNumber", "strain", "state", "gammaRatio",
@@ -43,8 +43,7 @@ def rows_from_runs(runs, start):
             continue
         run = case_description(case)
         ly = run["boxMax"][1] - run["boxMin"][1]
-        # runPoint's wall layers: 5 a1 from L_y = 20 a1 on, else L_y/4
-        p = adhesion_case(case, 5.0 if ly >= 20 else ly / 4, start)
+        p = adhesion_case(case, wall_layer(ly), start)
         row = {"case": os.path.basename(case),
                "phi0": float(re.match(r"phi([0-9.]+)_", os.path.basename(
                    case)).group(1))}

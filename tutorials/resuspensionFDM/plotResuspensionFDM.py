@@ -26,7 +26,6 @@ Writes resuspension.png.  Stresses in units of eta gammaDot_w.
 import argparse
 import glob
 import os
-import re
 
 import numpy as np
 import matplotlib
@@ -35,13 +34,12 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from fdmPost import suspensionBalance as sbm  # noqa: E402
 from fdmPost.channelFlow import mean_layers  # noqa: E402
-from fdmPost.rheology import channel_case  # noqa: E402
+from fdmPost.rheology import channel_case, number  # noqa: E402
 
 
 def shields_number(case):
     with open(f"{case}/constant/particleProperties") as f:
-        m = re.search(r"\bshieldsNumber\s+([^;\s]+)\s*;", f.read())
-    return float(m.group(1))
+        return number(f.read(), "shieldsNumber")
 
 
 def weight_above(y, phi, edges, g):

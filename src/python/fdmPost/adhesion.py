@@ -22,7 +22,7 @@ import re
 
 import numpy as np
 
-from fdmPost.rheology import core_rheology, couette_case
+from fdmPost.rheology import core_rheology, couette_case, number
 from fdmPost.sweep import fit_maron_pierce
 
 # gammaDot_core/gammaDot_0 below which the core is taken as not sheared
@@ -63,8 +63,9 @@ def adhesion_number(case):
     """G_0 of a case: contact.adhesionNumber of its
     constant/particleProperties, 0 without it."""
     with open(f"{case}/constant/particleProperties") as f:
-        m = re.search(r"\badhesionNumber\s+([^;\s]+)\s*;", f.read())
-    return float(m.group(1)) if m else 0.0
+        text = f.read()
+    return number(text, "adhesionNumber") \
+        if re.search(r"^\s*adhesionNumber\b", text, re.M) else 0.0
 
 
 def adhesion_case(case, layer, start):

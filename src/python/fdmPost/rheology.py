@@ -253,7 +253,8 @@ def maron_pierce(phi, alpha=0.803, phi_j=0.59):
 
 
 def number(text, key):
-    """The value of a top-level "key value;" entry of an OpenFOAM dictionary."""
+    """The value of the first "key value;" entry of an OpenFOAM dictionary
+    text that begins a line (at any depth)."""
     return float(re.search(rf"^\s*{key}\s+([^;\s]+)\s*;", text, re.M).group(1))
 
 

@@ -23,6 +23,12 @@ HEADER = (["case", "strain", "start", "records", "Lx", "Ly", "Lz"]
           + [f"{q}{s}" for q in QUANTITIES for s in ("", "Err")])
 
 
+def wall_layer(ly):
+    """The wall layer runPoint leaves out of the core: the thesis' 5 a1
+    from a wall separation of 20 a1 on, a quarter of it below."""
+    return 5.0 if ly >= 20 else ly / 4
+
+
 def point_row(case, strain, start, box, rheology):
     """One row of the reduced data: a case name, the strain reached, the
     strain the averages start at, the box edges and a core_rheology dict."""

@@ -47,7 +47,7 @@ def rows_from_runs(runs, start_at):
             continue
         run = case_description(case)
         box = np.asarray(run["boxMax"]) - np.asarray(run["boxMin"])
-        cs, gamma0 = couette_case(case, 5.0 if box[1] >= 20 else box[1] / 4)
+        cs, gamma0 = couette_case(case, sweep.wall_layer(box[1]))
         strain = cs.t[-1] * gamma0
         start = start_at if start_at is not None else (
             5.0 if strain >= 15 else strain / 3)
