@@ -5,7 +5,11 @@
 # stopped after 3 (between write times: a run's last step is written too)
 # and restarted from its latest time must reach the same particle state and
 # the HDF5 series must hold each step once (the straight run started from
-# outside its case directory with -case).  Checks in checkRestart.py.
+# outside its case directory with -case).  A run continued on another
+# machine from a particle checkpoint (fdmPost.checkpoint: the particle
+# state of 0.1 and the core records, no fields) must reach the same state
+# within the accuracy of a solve and its joined records the straight run's.
+# Checks in checkRestart.py.
 # The suspensionStress function object runs at every write and again
 # afterwards with postProcess; checkSuspensionStress.py compares it with
 # fdmPost.rheology on the HDF5 records.
@@ -48,6 +52,8 @@ LIST
 ) || exit 1
 
 cp -r "$work/straight" "$work/restarted"
+cp -r "$work/straight" "$work/segment"
+cp -r "$work/straight" "$work/continued"
 # From outside the case (-case): particlesFile is found in its constant/
 (
     cd "$work" && runLogged fdmSuspensionFoam -case straight &&
@@ -64,6 +70,23 @@ cp -r "$work/straight" "$work/restarted"
         > /dev/null
     mv log.fdmSuspensionFoam log.first
     runLogged fdmSuspensionFoam
+) || exit 1
+
+# On another machine: the first segment to 0.1 leaves a particle
+# checkpoint (no fields), which a case set up anew continues from
+checkpoint() { "$FDM_PYTHON" -m fdmPost.checkpoint "$@" >> log.checkpoint 2>&1 ||
+    { echo "FAILED: checkpoint $* (log: $PWD/log.checkpoint)"; return 1; }; }
+(
+    cd "$work/segment" || exit 1
+    foamDictionary -entry writeInterval -set 2 system/controlDict > /dev/null
+    foamDictionary -entry endTime -set 0.1 system/controlDict > /dev/null
+    runLogged fdmSuspensionFoam && checkpoint save . ../checkpoint --layer 1
+) || exit 1
+(
+    cd "$work/continued" &&
+    foamDictionary -entry startFrom -set latestTime system/controlDict \
+        > /dev/null && checkpoint restore ../checkpoint . &&
+    runLogged fdmSuspensionFoam && checkpoint save . ../checkpoint --layer 1
 ) || exit 1
 
 (cd "$work/straight" && runLogged postProcess) || exit 1

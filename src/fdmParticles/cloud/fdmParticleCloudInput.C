@@ -215,7 +215,10 @@ void Foam::fdmParticleCloud::readState()
     contacts_->readState(state, contact_);
     solved_ = state.get<bool>("solved");
     hasHistory_ = state.get<bool>("hasHistory");
-    firstSolveDone_ = solved_;
+    // coldFluid: a state restored from a particle checkpoint with the
+    // fields of time 0 (fdmPost.checkpoint): the Stokes flow has no memory,
+    // but its first solve starts cold and is converged as at time 0
+    firstSolveDone_ = solved_ && !state.getOrDefault("coldFluid", false);
 }
 
 

@@ -12,12 +12,15 @@ against the thesis' fit and the published closures:
   hat Sigma^c_22 = beta (phi/phi_J)^n that fdmPost.suspensionBalance
   .sweep_poiseuille gives the suspension balance model.
 
-    plotSweep.py [--runs DIR] [--start STRAIN] [--from-results]
+    plotSweep.py [--runs DIR...] [--start STRAIN] [--from-results]
 
-Reads every DIR/phi*/ case (default run/), writes the reduced data to
-results/sweep.csv and the fits to results/sweepFit.json, and
-results/sweep.png.  --from-results redraws from results/sweep.csv without
-the runs.  Wall layer 5 a1 for Ly >= 20, else Ly/4 (as runPoint);
+Reads every DIR/phi*/: a particle checkpoint's coreRecords.csv (the whole
+run over all its segments; default checkpoints/, committed) or a case's
+particles.h5 (default run/), the one of the largest strain where both
+have the case; merges the points into the reduced data results/sweep.csv
+(a point whose run and checkpoint are not here stays), writes the fits to
+results/sweepFit.json and results/sweep.png.  --from-results redraws from
+results/sweep.csv alone.  Wall layer 5 a1 for Ly >= 20, else Ly/4 (as runPoint);
 averages from strain 5, or from a third of a run shorter than 15.
 """
 
@@ -32,28 +35,46 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from fdmPost import sweep  # noqa: E402
+from fdmPost.checkpoint import case_records  # noqa: E402
+from fdmPost.coreRecords import CoreRecords  # noqa: E402
 from fdmPost.rheology import (case_description, core_rheology,  # noqa: E402
-                              couette_case, maron_pierce, morris_boulay,
+                              maron_pierce, morris_boulay,
                               morris_boulay_normal)
 from fdmPost.suspensionBalance import boyer_friction  # noqa: E402
 
 THESIS_ALPHA, THESIS_PHI_J = 0.803, 0.59
 
 
-def rows_from_runs(runs, start_at):
-    rows = []
-    for case in sorted(glob.glob(f"{runs}/phi*")):
-        if not os.path.exists(f"{case}/postProcessing/particles.h5"):
-            continue
+def run_records(case):
+    """The core records of a checkpoint (coreRecords.csv: the whole run,
+    every segment) or of a run's particles.h5, None for neither."""
+    if os.path.exists(f"{case}/coreRecords.csv"):
+        return CoreRecords.read(f"{case}/coreRecords.csv")
+    if os.path.exists(f"{case}/postProcessing/particles.h5"):
         run = case_description(case)
         box = np.asarray(run["boxMax"]) - np.asarray(run["boxMin"])
-        cs, gamma0 = couette_case(case, sweep.wall_layer(box[1]))
-        strain = cs.t[-1] * gamma0
+        return case_records(case, sweep.wall_layer(box[1]))
+    return None
+
+
+def rows_from_runs(folders, start_at):
+    """A row per phi*/ case of the folders; a case in several, the one that
+    reached the largest strain."""
+    rows = {}
+    for case in sorted(c for f in folders for c in glob.glob(f"{f}/phi*")):
+        records = run_records(case)
+        if records is None or not len(records.t):
+            continue
+        strain = records.strain()
         start = start_at if start_at is not None else (
             5.0 if strain >= 15 else strain / 3)
-        rows.append(sweep.point_row(os.path.basename(case), strain, start,
-                                    box, core_rheology(cs, start / gamma0)))
-    return rows
+        name = os.path.basename(case)
+        if name in rows and rows[name]["strain"] >= strain:
+            continue
+        rows[name] = sweep.point_row(
+            name, strain, start, records.meta["box"],
+            core_rheology(records, start / records.meta["shearRate"]))
+    return list(rows.values())
 
 
 def print_table(rows, fit):
@@ -139,8 +160,10 @@ def main():
     here = os.path.dirname(os.path.abspath(__file__))
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawTextHelpFormatter)
-    ap.add_argument("--runs", default=f"{here}/run",
-                    help="folder of the phi*/ cases (default run/)")
+    ap.add_argument("--runs", nargs="+",
+                    default=[f"{here}/checkpoints", f"{here}/run"],
+                    help="folders of the phi*/ cases or checkpoints"
+                    " (default checkpoints/ run/)")
     ap.add_argument("--start", type=float, default=None,
                     help="strain where averages start (default: runPoint's)")
     ap.add_argument("--from-results", action="store_true",
@@ -152,9 +175,14 @@ def main():
     else:
         rows = rows_from_runs(args.runs, args.start)
         if not rows:
-            print(f"plotSweep: no {args.runs}/phi*/ case with results"
+            print(f"plotSweep: no phi*/ case with results in {args.runs}"
                   " (run runPoint or runSweep first)")
             return 1
+        # Points whose runs and checkpoints are not here stay in the table
+        found = {r["case"] for r in rows}
+        kept = [r for r in sweep.read_points(table)
+                if r["case"] not in found] if os.path.exists(table) else []
+        rows = sorted(kept + rows, key=lambda r: r["phiCore"])
         sweep.write_points(table, rows)
         print(f"wrote {table}")
     fit = sweep.fit_sweep(rows)

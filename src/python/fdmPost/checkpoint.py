@@ -1,0 +1,156 @@
+"""Particle checkpoints: a Couette run continued on another machine.
+
+A Stokes flow keeps no memory of earlier times: the flow of a step is
+fixed by the particles' positions and the walls.  What a run must carry
+from one machine (or session) to the next is therefore small and kept in
+the repository: the particle state of its latest complete write and the
+core series of its records (fdmPost.coreRecords), not its fields.
+
+    python3 -m fdmPost.checkpoint save CASE DEST --layer L
+    python3 -m fdmPost.checkpoint restore DEST CASE --procs N
+
+save: DEST/particleState.<time> of CASE's newest time with a particle
+state, and DEST/coreRecords.csv, the records up to that time after those
+DEST already holds from before the run's first record.  It refuses to
+replace a later checkpoint with an earlier one.
+restore: the state as time <time> of a case set up at time 0 (startFrom
+latestTime in its system/controlDict), the fields
+of time 0 copied to it (processor*/0 when decomposed) and coldFluid set in
+the particle state: the solver then converges the first step as tightly as
+at time 0 (lambdaToleranceFirstStep).
+"""
+
+import argparse
+import glob
+import os
+import re
+import shutil
+import sys
+
+from fdmPost.coreRecords import CoreRecords
+from fdmPost.rheology import channel_case
+
+STATE = "particleState."
+
+
+def _is_time(name):
+    return re.fullmatch(r"[0-9.eE+-]+", name) is not None
+
+
+def latest_state(case):
+    """(time name, path) of the newest case/<time>/particleState, None when
+    the case has none after time 0 (a particle state file is written
+    whole or not at all)."""
+    times = [d for d in os.listdir(case) if _is_time(d) and float(d) > 0
+             and os.path.isfile(f"{case}/{d}/particleState")]
+    if not times:
+        return None
+    t = max(times, key=float)
+    return t, f"{case}/{t}/particleState"
+
+
+def checkpoint_state(dest):
+    """(time name, path) of DEST's particle state, None when it has none."""
+    states = glob.glob(f"{dest}/{STATE}*")
+    if not states:
+        return None
+    path = max(states, key=lambda p: float(p.rsplit(STATE, 1)[1]))
+    return path.rsplit(STATE, 1)[1], path
+
+
+def case_records(case, layer):
+    """The core records of CASE's particles.h5 with the run's geometry."""
+    cs, L, run = channel_case(case, layer)
+    meta = {"case": os.path.basename(os.path.abspath(case)),
+            "shearRate": run["shearRate"], "boxMin": run["boxMin"],
+            "box": L, "layer": layer}
+    return CoreRecords.from_series(cs, meta)
+
+
+def save(case, dest, layer):
+    found = latest_state(case)
+    if found is None:
+        raise SystemExit(f"checkpoint: {case} has no particle state after"
+                         " time 0")
+    time, state = found
+    earlier = checkpoint_state(dest)
+    if earlier is not None and float(earlier[0]) > float(time):
+        raise SystemExit(
+            f"checkpoint: {dest} holds time {earlier[0]}, later than {case}'s"
+            f" newest state {time}: not replaced (continue the run from it"
+            " with restore)")
+    records = case_records(case, layer).until(float(time))
+    table = f"{dest}/coreRecords.csv"
+    if os.path.exists(table):
+        records = CoreRecords.read(table).joined(records)
+    os.makedirs(dest, exist_ok=True)
+    # The records first: a kill between the two leaves records beyond the
+    # state, which the next segment's records replace (joined)
+    records.write(table)
+    tmp = f"{dest}/{STATE}{time}.tmp"
+    shutil.copyfile(state, tmp)
+    os.replace(tmp, f"{dest}/{STATE}{time}")
+    for old in glob.glob(f"{dest}/{STATE}*"):
+        if old != f"{dest}/{STATE}{time}":
+            os.remove(old)
+    print(f"checkpoint: {case} at time {time} (strain"
+          f" {records.strain():.3g}, {len(records.t)} records) in {dest}")
+
+
+def restore(dest, case, procs):
+    found = checkpoint_state(dest)
+    if found is None:
+        raise SystemExit(f"checkpoint: no particle state in {dest}")
+    time, state = found
+    if latest_state(case) is not None:
+        raise SystemExit(f"checkpoint: {case} has written times already:"
+                         " it continues from its own (not restored)")
+    control = f"{case}/system/controlDict"
+    with open(control) as f:
+        start = re.search(r"^\s*startFrom\s+(\w+)\s*;", f.read(), re.M)
+    if start is None or start.group(1) != "latestTime":
+        raise SystemExit(
+            f"checkpoint: {control}: startFrom"
+            f" {start.group(1) if start else '(missing)'}; the restored time"
+            " is run only with startFrom latestTime")
+    sources = ([f"{case}/processor{p}" for p in range(procs)]
+               if procs > 1 else [case])
+    for src in sources:
+        if not os.path.isdir(f"{src}/0"):
+            raise SystemExit(f"checkpoint: {src}/0 missing (set the case up"
+                             " first)")
+        shutil.copytree(f"{src}/0", f"{src}/{time}", dirs_exist_ok=True)
+    os.makedirs(f"{case}/{time}", exist_ok=True)
+    with open(state) as f:
+        text = f.read()
+    if not re.search(r"^coldFluid\s", text, re.M):
+        text = text.rstrip("\n") + "\n\ncoldFluid       true;\n"
+    tmp = f"{case}/{time}/particleState.tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, f"{case}/{time}/particleState")
+    print(f"checkpoint: {case} continues from {dest} at time {time}")
+    return time
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawTextHelpFormatter)
+    sub = ap.add_subparsers(dest="command", required=True)
+    s = sub.add_parser("save")
+    s.add_argument("case")
+    s.add_argument("dest")
+    s.add_argument("--layer", type=float, required=True)
+    r = sub.add_parser("restore")
+    r.add_argument("dest")
+    r.add_argument("case")
+    r.add_argument("--procs", type=int, default=1)
+    args = ap.parse_args(argv)
+    if args.command == "save":
+        save(args.case, args.dest, args.layer)
+    else:
+        restore(args.dest, args.case, args.procs)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
