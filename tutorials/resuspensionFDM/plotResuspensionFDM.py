@@ -20,11 +20,14 @@ spheres' mean radius, gammaDot_w the walls' shear rate):
 
     plotResuspensionFDM.py CASE... [--windows 4] [--start STRAIN]
 
+CASE: a run's particle checkpoint (checkpoints/Sh<S>: the series and the
+lid's force over all its segments, fdmPost.checkpoint) or a case
+directory.
+
 Writes resuspension.png.  Stresses in units of eta gammaDot_w.
 """
 
 import argparse
-import glob
 import os
 
 import numpy as np
@@ -33,13 +36,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from fdmPost import suspensionBalance as sbm  # noqa: E402
-from fdmPost.channelFlow import mean_layers  # noqa: E402
+from fdmPost import thinSeries  # noqa: E402
 from fdmPost.rheology import channel_case, number  # noqa: E402
 
 
-def shields_number(case):
-    with open(f"{case}/constant/particleProperties") as f:
-        return number(f.read(), "shieldsNumber")
+def shields_number(run):
+    """The Shields number of the gravity block in the run's
+    particleProperties (particles.h5 attributes)."""
+    return number(run["particleProperties"], "shieldsNumber")
 
 
 def weight_above(y, phi, edges, g):
@@ -50,21 +54,19 @@ def weight_above(y, phi, edges, g):
     return g * above
 
 
-def lid_stress(case, run, L, start, height):
-    """Shear stress of the clear fluid, eta dU/dy by least squares over the
-    cell layers from 1 a1 above the suspension to the lid, in the
-    reconstructed U of the written times from `start` (time); None
-    without them."""
-    times = sorted(float(os.path.basename(d)) for d in
-                   glob.glob(f"{case}/[0-9]*") if os.path.isfile(f"{d}/U"))
-    times = [t for t in times if t >= start and t > 0]
-    if not times:
+def lid_stress(case, L, start):
+    """The shear stress the suspension bears: the lid's force per area
+    (the lidForce function object; a checkpoint's lidForce.csv) averaged
+    over the times from `start`; None without its rows."""
+    if os.path.exists(f"{case}/lidForce.csv"):
+        rows = thinSeries.read_force_rows(f"{case}/lidForce.csv")
+    else:
+        rows = thinSeries.case_force_rows(case, "lidForce")
+    rows = rows[rows[:, 0] >= start]
+    if not len(rows):
         return None
-    n = np.rint(L / run["meshSpacing"]).astype(int)
-    U = mean_layers(case, "U", times, n)[:, 0]
-    y = run["boxMin"][1] + (np.arange(n[1]) + 0.5) * L[1] / n[1]
-    clear = y > height + 1
-    return run["viscosity"] * np.polyfit(y[clear], U[clear], 1)[0]
+    # The fluid pulls the lid (moving along +x) back: F_x = -tau L_x L_z
+    return -rows[:, 1].mean() / (L[0] * L[2])
 
 
 def sbm_profiles(cs, L, sh_tau):
@@ -91,7 +93,7 @@ def sbm_profiles(cs, L, sh_tau):
 def analyse(case, windows, start):
     cs, L, run = channel_case(case, 0.0)
     gamma = run["shearRate"]
-    sh = shields_number(case)
+    sh = shields_number(run)
     # drho g of the Shields number, in units of eta gammaDot_w/a1
     g = cs.eta * gamma / (sh * cs.a.mean())
     strain = cs.t * gamma
@@ -117,7 +119,7 @@ def analyse(case, windows, start):
                height=sbm.top_height(y, phi), centroid=sbm.centroid(y, phi))
     # eq 6 with the local rate, in the bed's bulk: 2 a1 above the floor,
     # 2 a1 below the top, sheared
-    tau = lid_stress(case, run, L, start / gamma, out["height"])
+    tau = lid_stress(case, L, start / gamma)
     # Shields number of the stress the bed bears (article 3's definition
     # with the imposed stress): Sh tau/(eta gammaDot_w)
     out["ShTau"] = None if tau is None else sh * tau / (cs.eta * gamma)
@@ -130,11 +132,11 @@ def analyse(case, windows, start):
 
 
 def report(r):
-    sh_tau = ("no reconstructed U" if r["ShTau"] is None else
+    sh_tau = ("no lidForce rows" if r["ShTau"] is None else
               f"{r['ShTau']:.3f}")
     print(f"{r['case']}: Sh {r['Sh']:g} (walls' shear rate), strain"
           f" {r['end']:.2f}; Shields number of the clear fluid's shear"
-          f" stress {sh_tau}")
+          f" stress (the lid's) {sh_tau}")
     print("  window strain   height  centroid  phi at the floor bin")
     for lo, hi, phi in r["windows"]:
         y = 0.5 * (r["edges"][1:] + r["edges"][:-1])

@@ -6,13 +6,18 @@ from one machine (or session) to the next is therefore small and kept in
 the repository: the particle state of its latest complete write and the
 core series of its records (fdmPost.coreRecords), not its fields.
 
-    python3 -m fdmPost.checkpoint save CASE DEST --layer L
+    python3 -m fdmPost.checkpoint save CASE DEST [--layer L] [--particles]
+                                       [--forces NAME...]
     python3 -m fdmPost.checkpoint restore DEST CASE --procs N
 
 save: DEST/particleState.<time> of CASE's newest time with a particle
-state, and DEST/coreRecords.csv, the records up to that time after those
-DEST already holds from before the run's first record.  It refuses to
-replace a later checkpoint with an earlier one.
+state and the run's records up to that time, after those DEST already
+holds from before the run's first record: with --layer the core records
+(DEST/coreRecords.csv, fdmPost.coreRecords: a Couette run of any size),
+with --particles the particle series (DEST/particles.h5,
+fdmPost.thinSeries: a run of few particles), with --forces the rows of
+those `forces` function objects (DEST/<NAME>.csv).  It refuses to replace
+a later checkpoint with an earlier one.
 restore: the state as time <time> of a case set up at time 0 (startFrom
 latestTime in its system/controlDict), the fields
 of time 0 copied to it (processor*/0 when decomposed) and coldFluid set in
@@ -27,6 +32,7 @@ import re
 import shutil
 import sys
 
+from fdmPost import thinSeries
 from fdmPost.coreRecords import CoreRecords
 from fdmPost.rheology import channel_case
 
@@ -67,7 +73,11 @@ def case_records(case, layer):
     return CoreRecords.from_series(cs, meta)
 
 
-def save(case, dest, layer):
+def save(case, dest, layer=None, particles=False, forces=()):
+    """The checkpoint of CASE in DEST: its newest particle state and, joined
+    with DEST's earlier records, the core records (layer given), the
+    thinned particle series (particles) and the force rows of the
+    `forces` function objects named."""
     found = latest_state(case)
     if found is None:
         raise SystemExit(f"checkpoint: {case} has no particle state after"
@@ -79,22 +89,53 @@ def save(case, dest, layer):
             f"checkpoint: {dest} holds time {earlier[0]}, later than {case}'s"
             f" newest state {time}: not replaced (continue the run from it"
             " with restore)")
-    records = case_records(case, layer).until(float(time))
-    table = f"{dest}/coreRecords.csv"
-    if os.path.exists(table):
-        records = CoreRecords.read(table).joined(records)
     os.makedirs(dest, exist_ok=True)
-    # The records first: a kill between the two leaves records beyond the
-    # state, which the next segment's records replace (joined)
-    records.write(table)
+    # The records first: a kill before the state is replaced leaves records
+    # beyond the state, which the next segment's records replace (joined)
+    summary = []
+    if layer is not None:
+        summary.append(_save_core_records(case, dest, layer, float(time)))
+    if particles:
+        summary.append(_save_thin_series(case, dest, float(time)))
+    for name in forces:
+        summary.append(_save_forces(case, dest, name, float(time)))
     tmp = f"{dest}/{STATE}{time}.tmp"
     shutil.copyfile(state, tmp)
     os.replace(tmp, f"{dest}/{STATE}{time}")
     for old in glob.glob(f"{dest}/{STATE}*"):
         if old != f"{dest}/{STATE}{time}":
             os.remove(old)
-    print(f"checkpoint: {case} at time {time} (strain"
-          f" {records.strain():.3g}, {len(records.t)} records) in {dest}")
+    print(f"checkpoint: {case} at time {time} in {dest}"
+          + "".join(f"; {s}" for s in summary))
+
+
+def _save_core_records(case, dest, layer, time):
+    records = case_records(case, layer).until(time)
+    table = f"{dest}/coreRecords.csv"
+    if os.path.exists(table):
+        records = CoreRecords.read(table).joined(records)
+    records.write(table)
+    return f"core records to strain {records.strain():.3g} ({len(records.t)})"
+
+
+def _save_thin_series(case, dest, time):
+    data, attrs = thinSeries.read(f"{case}/postProcessing/particles.h5")
+    data = thinSeries.until(data, time)
+    path = f"{dest}/particles.h5"
+    if os.path.exists(path):
+        data = thinSeries.joined(thinSeries.read(path)[0], data)
+    thinSeries.write(path, data, attrs)
+    return f"particle series, {len(data['time'])} records"
+
+
+def _save_forces(case, dest, name, time):
+    rows = thinSeries.case_force_rows(case, name)
+    rows = rows[rows[:, 0] <= time * (1 + 1e-12)]
+    path = f"{dest}/{name}.csv"
+    if os.path.exists(path):
+        rows = thinSeries.joined_rows(thinSeries.read_force_rows(path), rows)
+    thinSeries.write_force_rows(path, rows)
+    return f"{name}, {len(rows)} rows"
 
 
 def restore(dest, case, procs):
@@ -140,14 +181,19 @@ def main(argv=None):
     s = sub.add_parser("save")
     s.add_argument("case")
     s.add_argument("dest")
-    s.add_argument("--layer", type=float, required=True)
+    s.add_argument("--layer", type=float,
+                   help="keep the core records of this wall layer")
+    s.add_argument("--particles", action="store_true",
+                   help="keep the particle series (few particles)")
+    s.add_argument("--forces", nargs="+", default=(),
+                   help="keep the rows of these forces function objects")
     r = sub.add_parser("restore")
     r.add_argument("dest")
     r.add_argument("case")
     r.add_argument("--procs", type=int, default=1)
     args = ap.parse_args(argv)
     if args.command == "save":
-        save(args.case, args.dest, args.layer)
+        save(args.case, args.dest, args.layer, args.particles, args.forces)
     else:
         restore(args.dest, args.case, args.procs)
 

@@ -9,6 +9,7 @@ x, vorticity along z.  Stresses in the units of the run (Pa when the
 stresslets are in N m and lengths in m).
 """
 
+import os
 import re
 
 import numpy as np
@@ -309,10 +310,19 @@ def _description_from_dictionaries(case):
             "meshSpacing": L[0] / number(mesh, "nx")}
 
 
+def series_path(case):
+    """The particles.h5 of a case directory, or of a particle checkpoint
+    (fdmPost.checkpoint save --particles: the series of every segment)."""
+    kept = f"{case}/particles.h5"
+    return kept if os.path.isfile(kept) else \
+        f"{case}/postProcessing/particles.h5"
+
+
 def case_description(case):
-    """The run description of a case directory: its particles.h5's
-    attributes, or for a file without them the case's dictionaries."""
-    return (run_description(f"{case}/postProcessing/particles.h5")
+    """The run description of a case directory (or checkpoint): its
+    particles.h5's attributes, or for a file without them the case's
+    dictionaries."""
+    return (run_description(series_path(case))
             or _description_from_dictionaries(case))
 
 
@@ -320,7 +330,7 @@ def channel_case(case, layer):
     """The particle series of a channel case directory (walls normal to y)
     with its run description (case_description: box, viscosity eta, wall
     shear rate, mesh spacing).  Returns (series, box edges L, description)."""
-    path = f"{case}/postProcessing/particles.h5"
+    path = series_path(case)
     run = case_description(case)
     lo = np.asarray(run["boxMin"], float)
     L = np.asarray(run["boxMax"], float) - lo
