@@ -1,7 +1,8 @@
 """Unit tests of etc/caseFunctions: the restart guard removeIncompleteWrites
-(a write cut short by a kill is removed, whole writes are kept) and
+(a write cut short by a kill is removed, whole writes are kept),
 setAdhesion (the adhesive contact law set in a copy of the Couette
-tutorial's particleProperties, read back with foamDictionary)."""
+tutorial's particleProperties, read back with foamDictionary) and
+runSaving (a checkpoint saved during a run and after it)."""
 
 import os
 import shutil
@@ -103,6 +104,28 @@ class SetAdhesion(unittest.TestCase):
         self.assertEqual(entry("adhesionNumber"), "2.5")
         self.assertEqual(entry("meanDeformation"), "0.05")
         self.assertEqual(entry("friction"), "0.5")
+
+
+class RunSaving(unittest.TestCase):
+
+    def test_saves_during_the_run_and_after_it(self):
+        """A solver (a stand-in of 12 s that exits with 3) saved every 5 s:
+        at least one save while it runs, one after it, its exit status."""
+        tmp = tempfile.TemporaryDirectory()
+        self.addCleanup(tmp.cleanup)
+        script = ('. "$0"; fdmSuspensionFoam() { sleep 12; echo done; return 3; }; '
+                  'runSaving 1 log.solver 5 sh -c "date +%s.%N >> saves"')
+        out = subprocess.run(["bash", "-c", script, FUNCTIONS], cwd=tmp.name)
+        self.assertEqual(out.returncode, 3)
+        with open(os.path.join(tmp.name, "saves")) as f:
+            saves = [float(t) for t in f.read().split()]
+        with open(os.path.join(tmp.name, "log.solver")) as f:
+            self.assertEqual(f.read(), "done\n")
+        self.assertGreaterEqual(len(saves), 2)
+        self.assertLessEqual(len(saves), 3)
+        # The first save at about 5 s, the last after the solver stopped
+        # at 12 s
+        self.assertGreaterEqual(saves[-1] - saves[0], 5)
 
 
 if __name__ == "__main__":
