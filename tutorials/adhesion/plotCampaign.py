@@ -6,17 +6,19 @@ sigma* in each phi0 series and eq 5.7 fitted there, giving
 phi_J(sigma*), with the adhesionless phi_J of the Couette sweep
 (thesisSweep/results/sweepFit.json) as its high-stress limit.
 
-    plotCampaign.py [--runs DIR] [--levels S...] [--start STRAIN]
+    plotCampaign.py [--runs DIR...] [--levels S...] [--start STRAIN]
                     [--from-results]
 
-Reads DIR/phi*_G*/ (default ../couette/thesisSweep/run), writes
-results/campaign.csv (one row per run) and results/campaign.png;
---from-results redraws from the CSV without the runs.
+Reads DIR/phi*_G*/: the particle checkpoints' core records (default
+../couette/thesisSweep/checkpoints, committed: every segment of a run) or
+the cases' particles.h5 (default ../couette/thesisSweep/run), the one of
+the largest strain where both have a case; writes results/campaign.csv
+(one row per run) and results/campaign.png; --from-results redraws from
+the CSV without the runs.
 """
 
 import argparse
 import csv
-import glob
 import json
 import os
 import re
@@ -25,8 +27,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from fdmPost.adhesion import adhesion_case, jamming_fraction  # noqa: E402
-from fdmPost.rheology import case_description  # noqa: E402
+from fdmPost import checkpoint  # noqa: E402
+from fdmPost.adhesion import adhesion_records, jamming_fraction  # noqa: E402
 from fdmPost.sweep import wall_layer  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -36,17 +38,15 @@ FIELDS = ("case", "phi0", "adhesionNumber", "strain", "state", "gammaRatio",
 THESIS_PHI_J = 0.592   # mu = 0.5 without adhesion (section 5.4.4)
 
 
-def rows_from_runs(runs, start):
+def rows_from_runs(folders, start):
+    """A row per phi*_G*/ case of the folders (checkpoints or runs; a case
+    in several, the one that reached the largest strain)."""
     rows = []
-    for case in sorted(glob.glob(f"{runs}/phi*_G*")):
-        if not os.path.exists(f"{case}/postProcessing/particles.h5"):
-            continue
-        run = case_description(case)
-        ly = run["boxMax"][1] - run["boxMin"][1]
-        p = adhesion_case(case, wall_layer(ly), start)
-        row = {"case": os.path.basename(case),
-               "phi0": float(re.match(r"phi([0-9.]+)_", os.path.basename(
-                   case)).group(1))}
+    for name, records in checkpoint.records_by_case(
+            folders, "phi*_G*", wall_layer).items():
+        p = adhesion_records(records, start)
+        row = {"case": name,
+               "phi0": float(re.match(r"phi([0-9.]+)_", name).group(1))}
         for k in FIELDS[2:]:
             v = p[k.removesuffix("Err")]
             row[k] = v[k.endswith("Err")] if isinstance(v, tuple) else v
@@ -76,7 +76,9 @@ def series_of(rows):
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("--runs", default=f"{HERE}/../couette/thesisSweep/run")
+    sweep = f"{HERE}/../couette/thesisSweep"
+    ap.add_argument("--runs", nargs="+",
+                    default=[f"{sweep}/checkpoints", f"{sweep}/run"])
     ap.add_argument("--levels", type=float, nargs="+",
                     default=[1.0, 1.5, 2.0, 3.0, 5.0])
     ap.add_argument("--start", type=float, default=5.0)
@@ -88,7 +90,8 @@ def main():
     else:
         rows = rows_from_runs(args.runs, args.start)
         if not rows:
-            print(f"plotCampaign: no {args.runs}/phi*_G*/ case with results")
+            print(f"plotCampaign: no phi*_G*/ case with results in"
+                  f" {args.runs}")
             return 1
         os.makedirs(f"{HERE}/results", exist_ok=True)
         with open(table, "w", newline="") as f:

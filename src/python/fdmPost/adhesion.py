@@ -18,11 +18,11 @@ each, eta = alpha(sigma*)/(1 - phi/phi_J(sigma*))^2 (eq 5.7), giving
 phi_J(sigma*).
 """
 
-import re
 
 import numpy as np
 
-from fdmPost.rheology import core_rheology, couette_case, number
+from fdmPost.checkpoint import series_records
+from fdmPost.rheology import channel_case, core_rheology
 from fdmPost.sweep import fit_maron_pierce
 
 # gammaDot_core/gammaDot_0 below which the core is taken as not sheared
@@ -59,28 +59,28 @@ def adhesion_point(rheology, eta, gamma0, g0, phi_wall=None):
             "etaCore": eta_core, "state": state, "adhesionNumber": g0}
 
 
-def adhesion_number(case):
-    """G_0 of a case: contact.adhesionNumber of its
-    constant/particleProperties, 0 without it."""
-    with open(f"{case}/constant/particleProperties") as f:
-        text = f.read()
-    return number(text, "adhesionNumber") \
-        if re.search(r"^\s*adhesionNumber\b", text, re.M) else 0.0
+def adhesion_records(records, start):
+    """adhesion_point of a run's core records (fdmPost.coreRecords: a
+    checkpoint's or a case's) averaged from strain `start`, the wall
+    layers' phi averaged over the same records; with the strain reached
+    and the wall phi added."""
+    gamma0 = records.meta["shearRate"]
+    r = core_rheology(records, start / gamma0)
+    phi_wall = float(np.mean(records.phi_wall[records.t * gamma0 >= start]))
+    p = adhesion_point(r, records.eta, gamma0,
+                       records.meta.get("adhesionNumber", 0.0), phi_wall)
+    p.update(strain=records.strain(), phiWall=phi_wall)
+    return p
 
 
 def adhesion_case(case, layer, start):
-    """adhesion_point of a Couette case directory averaged from strain
-    `start`, the wall layers' phi from its phi(y) profile (a1 bins); with
-    the profile (y, phi), the strain reached and the wall phi added."""
-    cs, gamma0 = couette_case(case, layer)
-    steps = np.flatnonzero(cs.t * gamma0 >= start)
-    r = core_rheology(cs, start / gamma0)
-    lo, Ly = cs.lo[cs.n], cs.span[cs.n]
-    y, phi, _ = cs.profiles(int(round(Ly)), steps)
-    phi_wall = phi[(y - lo < layer) | (lo + Ly - y < layer)].mean()
-    p = adhesion_point(r, cs.eta, gamma0, adhesion_number(case), phi_wall)
-    p.update(case=case, y=y, phi=phi, strain=cs.t[-1] * gamma0,
-             phiWall=phi_wall)
+    """adhesion_records of a Couette case directory, with its phi(y)
+    profile (y, phi; a1 bins) averaged from strain `start`."""
+    cs, _, run = channel_case(case, layer)
+    p = adhesion_records(series_records(cs, run, case), start)
+    steps = np.flatnonzero(cs.t * run["shearRate"] >= start)
+    p["y"], p["phi"], _ = cs.profiles(int(round(cs.span[cs.n])), steps)
+    p["case"] = case
     return p
 
 

@@ -34,7 +34,7 @@ import sys
 
 from fdmPost import thinSeries
 from fdmPost.coreRecords import CoreRecords
-from fdmPost.rheology import channel_case
+from fdmPost.rheology import case_description, channel_case, number
 
 STATE = "particleState."
 
@@ -65,12 +65,50 @@ def checkpoint_state(dest):
 
 
 def case_records(case, layer):
-    """The core records of CASE's particles.h5 with the run's geometry."""
-    cs, L, run = channel_case(case, layer)
+    """The core records of CASE's particles.h5 (series_records)."""
+    cs, _, run = channel_case(case, layer)
+    return series_records(cs, run, case)
+
+
+def series_records(cs, run, case):
+    """The core records of a case's CouetteSeries cs with the run's
+    geometry (run: its description) and adhesion number
+    (contact.adhesionNumber, 0 without it)."""
+    props = run.get("particleProperties", "")
+    adhesion = number(props, "adhesionNumber") \
+        if re.search(r"^\s*adhesionNumber\b", props, re.M) else 0.0
     meta = {"case": os.path.basename(os.path.abspath(case)),
             "shearRate": run["shearRate"], "boxMin": run["boxMin"],
-            "box": L, "layer": layer}
+            "box": cs.span, "layer": cs.layer, "adhesionNumber": adhesion}
     return CoreRecords.from_series(cs, meta)
+
+
+def run_records(case, layer_of_height):
+    """The core records of a checkpoint (coreRecords.csv: the whole run,
+    every segment) or of a case's particles.h5 (wall layer
+    layer_of_height(L_y)), None for neither."""
+    if os.path.exists(f"{case}/coreRecords.csv"):
+        return CoreRecords.read(f"{case}/coreRecords.csv")
+    if os.path.exists(f"{case}/postProcessing/particles.h5"):
+        run = case_description(case)
+        ly = run["boxMax"][1] - run["boxMin"][1]
+        return case_records(case, layer_of_height(ly))
+    return None
+
+
+def records_by_case(folders, pattern, layer_of_height):
+    """{case name: core records} of the folders' cases matching pattern
+    (checkpoints or case directories, run_records); a case in several
+    folders, the records that reach the largest strain."""
+    out = {}
+    for case in sorted(c for f in folders for c in glob.glob(f"{f}/{pattern}")):
+        records = run_records(case, layer_of_height)
+        if records is None or not len(records.t):
+            continue
+        name = os.path.basename(case)
+        if name not in out or records.strain() > out[name].strain():
+            out[name] = records
+    return out
 
 
 def save(case, dest, layer=None, particles=False, forces=()):

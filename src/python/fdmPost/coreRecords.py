@@ -2,11 +2,11 @@
 
 A run longer than a session continues on another machine from a particle
 checkpoint (fdmPost.checkpoint): the particles.h5 of the earlier segments
-is gone there, so what the core averages need of it (eq 2.72-2.76, 4.13:
-per record the core shear rate, phi_core and the core stresses
-Sigma^hp and Sigma^c) is kept record by record in coreRecords.csv, with
-the run's geometry in a first comment line, and the segments are joined
-on time.
+is gone there, so what the core averages need of it (eqs 2.72-2.76, 4.13:
+per record the core shear rate, phi_core and the core stresses Sigma^hp
+and Sigma^c) and the wall layers' phi (the depletion of chapter 5) is
+kept record by record in coreRecords.csv, with the run's geometry in a
+first comment line, and the segments are joined on time.
 
     CoreRecords.from_series(cs, meta)   from a CouetteSeries
     records.write(path) / CoreRecords.read(path)
@@ -24,7 +24,7 @@ import numpy as np
 # Upper triangle of a symmetric tensor, the order of the stresslets in
 # particles.h5 (rheology.symm6_to_tensor)
 PAIRS = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
-COLUMNS = (["time", "gammaDotCore", "phiCore"]
+COLUMNS = (["time", "gammaDotCore", "phiCore", "phiWall"]
            + [f"hp{i + 1}{j + 1}" for i, j in PAIRS]
            + [f"c{i + 1}{j + 1}" for i, j in PAIRS])
 
@@ -41,14 +41,16 @@ def _tensors(upper):
 
 
 class CoreRecords:
-    """Per record: time t, core shear rate g, phi_core, Sigma^hp (hp) and
-    Sigma^c (c) as 3x3 tensors; meta: the run's geometry (at least eta,
-    the fluid viscosity, shearRate, the walls' rate, box and layer)."""
+    """Per record: time t, core shear rate g, phi_core, the wall layers'
+    phi (phi_wall), Sigma^hp (hp) and Sigma^c (c) as 3x3 tensors; meta:
+    the run's geometry (at least eta, the fluid viscosity, shearRate, the
+    walls' rate, box and layer)."""
 
-    def __init__(self, t, g, phi, hp, c, meta):
+    def __init__(self, t, g, phi, phi_wall, hp, c, meta):
         self.t = np.asarray(t, float)
         self.g = np.asarray(g, float)
         self.phi = np.asarray(phi, float)
+        self.phi_wall = np.asarray(phi_wall, float)
         self.hp = np.asarray(hp, float).reshape(-1, 3, 3)
         self.c = np.asarray(c, float).reshape(-1, 3, 3)
         self.meta = dict(meta)
@@ -57,7 +59,12 @@ class CoreRecords:
     @staticmethod
     def from_series(cs, meta):
         g, phi, hp, c = cs.series()
-        return CoreRecords(cs.t, g, phi, hp, c, {"eta": cs.eta, **meta})
+        wall = [cs.wall_volume_fraction(k) for k in range(len(cs.t))]
+        return CoreRecords(cs.t, g, phi, wall, hp, c, {"eta": cs.eta, **meta})
+
+    def _rows(self, keep):
+        return (self.t[keep], self.g[keep], self.phi[keep],
+                self.phi_wall[keep], self.hp[keep], self.c[keep])
 
     def series(self):
         return self.g, self.phi, self.hp, self.c
@@ -69,8 +76,7 @@ class CoreRecords:
     def until(self, time):
         """The records at times up to `time` (a checkpoint's state)."""
         keep = self.t <= time * (1 + 1e-12)
-        return CoreRecords(self.t[keep], self.g[keep], self.phi[keep],
-                           self.hp[keep], self.c[keep], self.meta)
+        return CoreRecords(*self._rows(keep), self.meta)
 
     def joined(self, later):
         """This run's records before the first of `later`, then `later`'s:
@@ -78,18 +84,16 @@ class CoreRecords:
         if not len(later.t):
             return self
         keep = self.t < later.t[0] * (1 - 1e-12)
-        return CoreRecords(
-            np.concatenate((self.t[keep], later.t)),
-            np.concatenate((self.g[keep], later.g)),
-            np.concatenate((self.phi[keep], later.phi)),
-            np.concatenate((self.hp[keep], later.hp)),
-            np.concatenate((self.c[keep], later.c)), later.meta)
+        every = np.ones(len(later.t), bool)
+        return CoreRecords(*(np.concatenate((a, b)) for a, b in
+                             zip(self._rows(keep), later._rows(every))),
+                           later.meta)
 
     def write(self, path):
         """Written under a temporary name and renamed into place: a kill
         leaves the previous table or the whole new one."""
-        table = np.column_stack((self.t, self.g, self.phi, _upper(self.hp),
-                                 _upper(self.c)))
+        table = np.column_stack((self.t, self.g, self.phi, self.phi_wall,
+                                 _upper(self.hp), _upper(self.c)))
         if not np.isfinite(table[:, [0, 2]]).all():
             raise ValueError(f"{path}: non-finite time or phi_core")
         tmp = f"{path}.tmp"
@@ -116,8 +120,8 @@ class CoreRecords:
         if not table.size:
             table = np.zeros((0, len(COLUMNS)))
         return CoreRecords(table[:, 0], table[:, 1], table[:, 2],
-                           _tensors(table[:, 3:9]), _tensors(table[:, 9:15]),
-                           meta)
+                           table[:, 3], _tensors(table[:, 4:10]),
+                           _tensors(table[:, 10:16]), meta)
 
 
 def _plain(value):

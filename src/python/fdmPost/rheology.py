@@ -126,6 +126,16 @@ class CouetteSeries:
         v = slab_volume(self.x[k, :, self.n], self.a, *self.core)
         return v.sum() / (self.area * (self.core[1] - self.core[0]))
 
+    def wall_volume_fraction(self, k):
+        """Particle volume in the two wall layers over their volume (the
+        wall depletion of chapter 5)."""
+        lo, hi = self.lo[self.n], self.lo[self.n] + self.span[self.n]
+        y = self.x[k, :, self.n]
+        v = slab_volume(y, self.a, lo, self.core[0]) \
+            + slab_volume(y, self.a, self.core[1], hi)
+        return v.sum() / (self.area * (self.span[self.n]
+                                       - (self.core[1] - self.core[0])))
+
     def core_shear_rate(self, k):
         """Slope of u_x against y of the particles centred in the core."""
         c = self.in_core(k)

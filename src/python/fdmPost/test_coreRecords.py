@@ -1,7 +1,8 @@
 """Unit tests of fdmPost.coreRecords and fdmPost.checkpoint: a run cut
 into segments (each restarted at the time of its checkpoint, its first
 record written again) and joined gives the core averages of the unbroken
-run; the table round trip; save keeps records only up to the saved state
+run; the table round trip; the wall layers' phi against the phi(y)
+profile; save keeps records only up to the saved state
 and never replaces a later checkpoint; restore marks the state cold and
 copies the fields of time 0."""
 
@@ -69,6 +70,16 @@ class JoinedSegments(unittest.TestCase):
             np.testing.assert_allclose(getattr(back, name),
                                        getattr(records, name), rtol=1e-8,
                                        atol=1e-12, err_msg=name)
+
+    def test_wall_phi_is_the_profile_of_the_wall_layers(self):
+        # phi(y) on 1-wide bins (CouetteSeries.profiles) over the two
+        # 2-wide wall layers of the 8-high cell, against the per-record
+        # wall phi averaged over the records
+        cs = series(synthetic_run())
+        records = CoreRecords.from_series(cs, META)
+        y, phi, _ = cs.profiles(8, range(len(cs.t)))
+        wall = phi[(y < 2) | (y > 6)].mean()
+        self.assertAlmostEqual(records.phi_wall.mean(), wall, delta=1e-12)
 
     def test_until_keeps_the_records_up_to_a_state(self):
         records = CoreRecords.from_series(series(synthetic_run()), META)

@@ -25,7 +25,6 @@ averages from strain 5, or from a third of a run shorter than 15.
 """
 
 import argparse
-import glob
 import json
 import os
 
@@ -34,47 +33,27 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from fdmPost import sweep  # noqa: E402
-from fdmPost.checkpoint import case_records  # noqa: E402
-from fdmPost.coreRecords import CoreRecords  # noqa: E402
-from fdmPost.rheology import (case_description, core_rheology,  # noqa: E402
-                              maron_pierce, morris_boulay,
-                              morris_boulay_normal)
+from fdmPost import checkpoint, sweep  # noqa: E402
+from fdmPost.rheology import (core_rheology, maron_pierce,  # noqa: E402
+                              morris_boulay, morris_boulay_normal)
 from fdmPost.suspensionBalance import boyer_friction  # noqa: E402
 
 THESIS_ALPHA, THESIS_PHI_J = 0.803, 0.59
 
 
-def run_records(case):
-    """The core records of a checkpoint (coreRecords.csv: the whole run,
-    every segment) or of a run's particles.h5, None for neither."""
-    if os.path.exists(f"{case}/coreRecords.csv"):
-        return CoreRecords.read(f"{case}/coreRecords.csv")
-    if os.path.exists(f"{case}/postProcessing/particles.h5"):
-        run = case_description(case)
-        box = np.asarray(run["boxMax"]) - np.asarray(run["boxMin"])
-        return case_records(case, sweep.wall_layer(box[1]))
-    return None
-
-
 def rows_from_runs(folders, start_at):
-    """A row per phi*/ case of the folders; a case in several, the one that
-    reached the largest strain."""
-    rows = {}
-    for case in sorted(c for f in folders for c in glob.glob(f"{f}/phi*")):
-        records = run_records(case)
-        if records is None or not len(records.t):
-            continue
+    """A row per phi*/ case of the folders (checkpoints or runs; a case in
+    several, the one that reached the largest strain)."""
+    rows = []
+    for name, records in checkpoint.records_by_case(
+            folders, "phi*", sweep.wall_layer).items():
         strain = records.strain()
         start = start_at if start_at is not None else (
             5.0 if strain >= 15 else strain / 3)
-        name = os.path.basename(case)
-        if name in rows and rows[name]["strain"] >= strain:
-            continue
-        rows[name] = sweep.point_row(
+        rows.append(sweep.point_row(
             name, strain, start, records.meta["box"],
-            core_rheology(records, start / records.meta["shearRate"]))
-    return list(rows.values())
+            core_rheology(records, start / records.meta["shearRate"])))
+    return rows
 
 
 def print_table(rows, fit):
