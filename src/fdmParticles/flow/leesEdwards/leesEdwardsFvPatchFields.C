@@ -1,0 +1,39 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+
+Description
+    The leesEdwards patch fields of scalars (the pressure, continuous
+    across the sheared faces) and vectors (the velocity, which jumps by
+    gammaDot L_y along x).
+
+\*---------------------------------------------------------------------------*/
+
+#include "leesEdwardsFvPatchField.H"
+#include "volFields.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * * Specialisations * * * * * * * * * * * * * * //
+
+template<>
+Foam::vector Foam::leesEdwardsFvPatchField<Foam::vector>::jump() const
+{
+    // The image one period up moves at +gammaDot L_y along x: seen from
+    // the upper side the neighbour is faster, from the lower side slower
+    const scalar du = shearRate_*patch().boundaryMesh().mesh().bounds()
+        .span().y();
+    return vector(upperSide() ? du : -du, 0, 0);
+}
+
+
+namespace Foam
+{
+    typedef leesEdwardsFvPatchField<scalar> leesEdwardsFvPatchScalarField;
+    typedef leesEdwardsFvPatchField<vector> leesEdwardsFvPatchVectorField;
+
+    makeTemplatePatchTypeField(scalar, leesEdwards);
+    makeTemplatePatchTypeField(vector, leesEdwards);
+}
+
+
+// ************************************************************************* //

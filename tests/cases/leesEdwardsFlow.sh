@@ -1,0 +1,63 @@
+#!/bin/bash
+# Case test: particle-free shear in a Lees-Edwards box (the plane channel's
+# walls replaced by a y-periodic patch with the leesEdwards coupling at
+# shear rate 1), serial and on 2 ranks split along z, at t = 0.93: the
+# offset 0.18 is 2.88 cells, not a whole number.  The uniform shear
+# u_x = y - 1/2 is exact (tolerance 1e-10, the linear solvers at 1e-14).
+# A split along y (across the sheared faces) and particles in the box
+# stop with what to change.
+source "${0%/*}/caseTestFunctions"
+
+work=$(caseWorkDir leesEdwardsFlow)
+cloneCase planeChannel "$work"
+(
+    cd "$work" || exit 1
+    sed -i -e 's/bottomWall { type wall;/bottomWall { type cyclic; neighbourPatch topWall;/' \
+        -e 's/topWall    { type wall;/topWall    { type cyclic; neighbourPatch bottomWall;/' \
+        system/blockMeshDict
+    for field in U p
+    do
+        foamDictionary -entry boundaryField -set "{ \"(bottomWall|topWall)\"
+            { type leesEdwards; patchType cyclic; shearRate 1; }
+            \"(left|right|front|back)\" { type cyclic; } }" 0/$field \
+            > /dev/null
+    done
+    foamDictionary -entry endTime -set 0.93 system/controlDict > /dev/null
+    foamDictionary -entry deltaT -set 0.93 system/controlDict > /dev/null
+    foamDictionary -entry coeffs.n -set "(1 1 2)" system/decomposeParDict \
+        > /dev/null
+) || exit 1
+runSerialAndParallel "$work" || exit 1
+
+"$FDM_PYTHON" "$caseTemplates/checkChannelProfile.py" --case "$work" \
+    --time 0.93 --profile couette --wall-speed 0.5 --delta 0.0625 \
+    --tol 1e-10 || exit 1
+
+# Split along y: refused before anything runs
+(
+    cd "$work/parallel" || exit 1
+    rm -rf processor*
+    foamDictionary -entry coeffs.n -set "(1 2 1)" system/decomposeParDict \
+        > /dev/null
+    runLogged decomposePar || exit 1
+    if mpirun -np 2 --oversubscribe fdmSuspensionFoam -parallel \
+        > log.ySplit 2>&1
+    then
+        echo "FAILED: a split along y ran"; exit 1
+    fi
+    grep -qF "decompose along z only" log.ySplit \
+        || { echo "FAILED: no message on the y split"; tail -n 15 log.ySplit; exit 1; }
+    echo "   y split: stops with 'decompose along z only'"
+) || exit 1
+
+# Particles in the sheared box: refused
+mkdir -p "$work/particles" && cp -r "$work"/{0,constant,system} "$work/particles"/
+foamDictionary -entry rho -add 1 "$work/particles/constant/transportProperties" > /dev/null
+cat > "$work/particles/constant/particleProperties" <<'DICT'
+FoamFile { version 2.0; format ascii; class dictionary; object particleProperties; }
+coupling { lambdaTolerance 1e-4; particleSolveTolerance 1e-6; }
+groups { suspended { } }
+particles ( (suspended (0.125 0.5 0.125) 0.05) );
+DICT
+expectStop "$work/particles" fdmSuspensionFoam \
+    "particles across sheared periodic faces are not supported yet"
