@@ -1,4 +1,4 @@
-"""Particle checkpoints: a Couette run continued on another machine.
+"""Particle checkpoints: a run continued on another machine.
 
 A Stokes flow keeps no memory of earlier times: the flow of a step is
 fixed by the particles' positions and the walls.  What a run must carry
@@ -19,10 +19,10 @@ fdmPost.thinSeries: a run of few particles), with --forces the rows of
 those `forces` function objects (DEST/<NAME>.csv).  It refuses to replace
 a later checkpoint with an earlier one.
 restore: the state as time <time> of a case set up at time 0 (startFrom
-latestTime in its system/controlDict), the fields
-of time 0 copied to it (processor*/0 when decomposed) and coldFluid set in
-the particle state: the solver then converges the first step as tightly as
-at time 0 (lambdaToleranceFirstStep).
+latestTime in its system/controlDict), the fields of time 0 copied to it
+(processor*/0 when decomposed) and coldFluid set in the particle state:
+the solver then converges the first step as tightly as at time 0
+(lambdaToleranceFirstStep).
 """
 
 import argparse
@@ -32,7 +32,7 @@ import re
 import shutil
 import sys
 
-from fdmPost import thinSeries
+from fdmPost import segments, thinSeries
 from fdmPost.coreRecords import CoreRecords
 from fdmPost.rheology import case_description, channel_case, number
 
@@ -56,12 +56,14 @@ def latest_state(case):
 
 
 def checkpoint_state(dest):
-    """(time name, path) of DEST's particle state, None when it has none."""
-    states = glob.glob(f"{dest}/{STATE}*")
-    if not states:
+    """(time name, path) of DEST's particle state, None when it has none
+    (a copy a kill cut short, particleState.<time>.tmp, is not one)."""
+    times = [p.rsplit(STATE, 1)[1] for p in glob.glob(f"{dest}/{STATE}*")]
+    times = [t for t in times if _is_time(t)]
+    if not times:
         return None
-    path = max(states, key=lambda p: float(p.rsplit(STATE, 1)[1]))
-    return path.rsplit(STATE, 1)[1], path
+    t = max(times, key=float)
+    return t, f"{dest}/{STATE}{t}"
 
 
 def case_records(case, layer):
@@ -142,7 +144,7 @@ def save(case, dest, layer=None, particles=False, forces=()):
     os.replace(tmp, f"{dest}/{STATE}{time}")
     for old in glob.glob(f"{dest}/{STATE}*"):
         if old != f"{dest}/{STATE}{time}":
-            os.remove(old)
+            os.remove(old)   # older states and cut-short copies
     print(f"checkpoint: {case} at time {time} in {dest}"
           + "".join(f"; {s}" for s in summary))
 
@@ -168,7 +170,7 @@ def _save_thin_series(case, dest, time):
 
 def _save_forces(case, dest, name, time):
     rows = thinSeries.case_force_rows(case, name)
-    rows = rows[rows[:, 0] <= time * (1 + 1e-12)]
+    rows = rows[segments.up_to(rows[:, 0], time)]
     path = f"{dest}/{name}.csv"
     if os.path.exists(path):
         rows = thinSeries.joined_rows(thinSeries.read_force_rows(path), rows)

@@ -21,6 +21,8 @@ import os
 
 import numpy as np
 
+from fdmPost import segments
+
 # Upper triangle of a symmetric tensor, the order of the stresslets in
 # particles.h5 (rheology.symm6_to_tensor)
 PAIRS = ((0, 0), (0, 1), (0, 2), (1, 1), (1, 2), (2, 2))
@@ -75,15 +77,13 @@ class CoreRecords:
 
     def until(self, time):
         """The records at times up to `time` (a checkpoint's state)."""
-        keep = self.t <= time * (1 + 1e-12)
-        return CoreRecords(*self._rows(keep), self.meta)
+        return CoreRecords(*self._rows(segments.up_to(self.t, time)),
+                           self.meta)
 
     def joined(self, later):
         """This run's records before the first of `later`, then `later`'s:
         a segment restarted at time T writes its record of T again."""
-        if not len(later.t):
-            return self
-        keep = self.t < later.t[0] * (1 - 1e-12)
+        keep = segments.before(self.t, later.t)
         every = np.ones(len(later.t), bool)
         return CoreRecords(*(np.concatenate((a, b)) for a, b in
                              zip(self._rows(keep), later._rows(every))),

@@ -114,8 +114,13 @@ class SaveAndRestore(unittest.TestCase):
             write_case(f"{d}/run", data, ["2", "3.5"])
             # A time written later but cut short has no particle state
             os.makedirs(f"{d}/run/4")
+            # A copy that a kill cut short is not a state
+            os.makedirs(f"{d}/ck")
+            with open(f"{d}/ck/particleState.9.tmp", "w") as f:
+                f.write("cut short")
             checkpoint.save(f"{d}/run", f"{d}/ck", layer=2.0)
             self.assertEqual(checkpoint.checkpoint_state(f"{d}/ck")[0], "3.5")
+            self.assertFalse(os.path.exists(f"{d}/ck/particleState.9.tmp"))
             saved = CoreRecords.read(f"{d}/ck/coreRecords.csv")
             self.assertEqual(saved.t[-1], 3.5)
 

@@ -15,6 +15,8 @@ import re
 
 import numpy as np
 
+from fdmPost import segments
+
 # The per-record series CouetteSeries reads, and the per-particle constants
 SERIES = ("position", "velocity", "stresslet", "dipoleTrace",
           "contactStresslet")
@@ -32,7 +34,7 @@ def read(path):
 
 def until(data, time):
     """The records at times up to `time`."""
-    keep = data["time"] <= time * (1 + 1e-12)
+    keep = segments.up_to(data["time"], time)
     return {k: (v[keep] if k in SERIES + ("time",) else v)
             for k, v in data.items()}
 
@@ -40,9 +42,9 @@ def until(data, time):
 def joined(earlier, later):
     """earlier's records before later's first, then later's (a segment
     restarted at time T writes its record of T again)."""
-    if earlier is None or not len(later["time"]):
+    if earlier is None:
         return later
-    keep = earlier["time"] < later["time"][0] * (1 - 1e-12)
+    keep = segments.before(earlier["time"], later["time"])
     out = dict(later)
     for k in ("time",) + SERIES:
         if k in later:
@@ -112,7 +114,8 @@ def read_force_rows(path):
 
 
 def joined_rows(earlier, later):
-    if earlier is None or not len(later):
+    """Force rows (time first) joined as the records are (joined)."""
+    if earlier is None:
         return later
-    return np.vstack((earlier[earlier[:, 0] < later[0, 0] * (1 - 1e-12)],
+    return np.vstack((earlier[segments.before(earlier[:, 0], later[:, 0])],
                       later))
