@@ -18,7 +18,6 @@ each, eta = alpha(sigma*)/(1 - phi/phi_J(sigma*))^2 (eq 5.7), giving
 phi_J(sigma*).
 """
 
-
 import numpy as np
 
 from fdmPost.checkpoint import series_records
