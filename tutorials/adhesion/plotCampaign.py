@@ -23,6 +23,7 @@ import json
 import os
 import re
 
+import numpy as np
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -135,8 +136,10 @@ def draw(rows, fits, limit, path):
         ax[0].errorbar([r["sigmaStar"] for r in runs],
                        [r["etaApp"] if b else r["etaCore"]
                         for r, b in zip(runs, banded)],
-                       yerr=[r["etaAppErr"] if b else r["etaCoreErr"]
-                             for r, b in zip(runs, banded)],
+                       # a run too short for block errors: no error bar
+                       yerr=np.nan_to_num([r["etaAppErr"] if b
+                                           else r["etaCoreErr"]
+                                           for r, b in zip(runs, banded)]),
                        fmt="o-", color=f"C{k}", label=rf"$\phi_0$ {phi0:g}")
         for r, b in zip(runs, banded):
             if b:
