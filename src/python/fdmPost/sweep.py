@@ -103,7 +103,10 @@ def fit_sweep(rows):
     """Both fits of a sweep (rows of read_points): a dict of alpha, phiJ,
     beta, n with their standard errors and covariances, None where there
     are fewer than three points.  The closure is fitted against
-    phi_core/phi_J of the fitted phi_J."""
+    phi_core/phi_J of the fitted phi_J.  A point without an error bar (a
+    run too short for block errors) is left out."""
+    rows = [r for r in rows
+            if np.isfinite(r["etaCoreErr"]) and r["etaCoreErr"] > 0]
     phi = np.array([r["phiCore"] for r in rows])
     mp = fit_maron_pierce(phi, [r["etaCore"] for r in rows],
                           [r["etaCoreErr"] for r in rows])

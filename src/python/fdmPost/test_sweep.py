@@ -92,5 +92,16 @@ class ContactNormalFit(unittest.TestCase):
         self.assertEqual(fit["points"], len(PHI))
 
 
+class UnfinishedPoint(unittest.TestCase):
+    def test_a_point_without_error_bar_is_left_out(self):
+        rows = [sweep.point_row(f"phi{p}", 60.0, 5.0, (10, 20, 10),
+                                rheology(p, maron_pierce(p))) for p in PHI]
+        short = sweep.point_row("short", 0.3, 0.1, (10, 25, 10),
+                                rheology(0.55, 100.0))
+        short["etaCoreErr"] = float("nan")
+        fit = sweep.fit_sweep(rows + [short])
+        self.assertAlmostEqual(fit["phiJ"], 0.59, delta=1e-6)
+
+
 if __name__ == "__main__":
     unittest.main()
