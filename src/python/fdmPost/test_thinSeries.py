@@ -56,6 +56,15 @@ class ForceRows(unittest.TestCase):
                                                  0.369733719976051145,
                                                  9.42718387960256088])
 
+    def test_a_segment_without_force_rows_joins(self):
+        with tempfile.TemporaryDirectory() as d:
+            thinSeries.write_force_rows(f"{d}/lid.csv", np.zeros((0, 4)))
+            empty = thinSeries.read_force_rows(f"{d}/lid.csv")
+        self.assertEqual(empty.shape, (0, 4))
+        later = np.array([[0.16, -1.0, 0.0, 0.0]])
+        np.testing.assert_array_equal(thinSeries.joined_rows(empty, later),
+                                      later)
+
     def test_checkpoint_keeps_particles_and_forces(self):
         data = synthetic_run()
         with tempfile.TemporaryDirectory() as d:

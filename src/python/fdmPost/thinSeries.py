@@ -12,6 +12,7 @@ joined over the run's segments on time.
 
 import os
 import re
+import warnings
 
 import numpy as np
 
@@ -110,7 +111,11 @@ def write_force_rows(path, rows):
 
 
 def read_force_rows(path):
-    return np.loadtxt(path, delimiter=",", ndmin=2)
+    """The rows of write_force_rows, (0, 4) when it kept none (a segment
+    shorter than the function object's interval)."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)  # no rows
+        return np.loadtxt(path, delimiter=",", ndmin=2).reshape(-1, 4)
 
 
 def joined_rows(earlier, later):
