@@ -14,6 +14,7 @@ Description
 #include "particleStateFile.H"
 #include "checkKeywords.H"
 #include "readBounded.H"
+#include "leesEdwardsFvPatchField.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -33,7 +34,7 @@ void refuseShearedImages(const fvMesh& mesh, const dictionary& dict)
     }
     for (const auto& pf : mesh.lookupObject<volVectorField>("U").boundaryField())
     {
-        if (pf.type() == "leesEdwards")
+        if (pf.type() == leesEdwardsFvPatchField<vector>::typeName)
         {
             FatalIOErrorInFunction(dict)
                 << "U has a leesEdwards boundary (patch "

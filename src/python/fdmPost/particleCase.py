@@ -79,7 +79,12 @@ def series_rows(files):
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", UserWarning)  # empty input
         tables = [np.loadtxt(f, ndmin=2) for f in files]
-    data = np.vstack([t for t in tables if t.size])
+    return latest_per_time(np.vstack([t for t in tables if t.size]))
+
+
+def latest_per_time(data):
+    """Rows (time in the first column, in run order) sorted by time, one
+    per time: where runs overlap, the later run's row."""
     _, last = np.unique(data[::-1, 0], return_index=True)
     return data[::-1][last]
 

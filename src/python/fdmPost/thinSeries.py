@@ -10,6 +10,7 @@ object (the lid's force: the shear stress the suspension bears), each
 joined over the run's segments on time.
 """
 
+import glob
 import os
 import re
 import warnings
@@ -17,6 +18,7 @@ import warnings
 import numpy as np
 
 from fdmPost import segments
+from fdmPost.particleCase import latest_per_time
 
 # The per-record series CouetteSeries reads, and the per-particle constants
 SERIES = ("position", "velocity", "stresslet", "dipoleTrace",
@@ -84,15 +86,14 @@ def force_rows(files):
                 rows.append([float(v) for v in values[:4]])
     if not rows:
         return np.zeros((0, 4))
-    data = np.array(rows)
-    _, last = np.unique(data[::-1, 0], return_index=True)
-    return data[::-1][last]
+    return latest_per_time(np.array(rows))
 
 
 def case_force_rows(case, name):
     """The force rows of the function object `name` of a case directory:
-    postProcessing/<name>/<t0>/force*.dat ordered by start time."""
-    import glob
+    postProcessing/<name>/<t0>/force*.dat ordered by start time (and
+    within a start time force.dat before the force_<t0>.dat that OpenFOAM
+    writes beside it on a second run from the same time)."""
     found = []
     for path in glob.glob(f"{case}/postProcessing/{name}/*/force*.dat"):
         try:

@@ -20,8 +20,9 @@ particles.h5 (default run/), the one of the largest strain where both
 have the case; merges the points into the reduced data results/sweep.csv
 (a point whose run and checkpoint are not here stays), writes the fits to
 results/sweepFit.json and results/sweep.png.  --from-results redraws from
-results/sweep.csv alone.  Wall layer 5 a1 for Ly >= 20, else Ly/4 (as runPoint);
-averages from strain 5, or from a third of a run shorter than 15.
+results/sweep.csv alone.  Wall layer 5 a1 for Ly >= 20, else Ly/4 (as
+runPoint); averages from strain 5, or from a third of a run shorter than
+15.
 """
 
 import argparse
