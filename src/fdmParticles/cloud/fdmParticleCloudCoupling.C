@@ -167,15 +167,21 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
     contacts_->update
     (
         state_.position, state_.radius, box_, near_,
-        mesh_.time().deltaTValue()
+        fdm::positionStep::of(hasHistory_, mesh_.time().deltaTValue()),
+        state_.Uold
     );
     if (verbose_)
     {
         contacts_->report();
     }
     // Explicit loads for the coming solve; a solved state read at a
-    // restart keeps the loads it was written with
-    if (!solved_)
+    // restart keeps the loads it was written with, and its contacts are
+    // linearised about the gaps its velocities predict, as they were
+    if (solved_)
+    {
+        contacts_->relinearise(state_.U);
+    }
+    else
     {
         contact_ = contacts_->loads();
     }
@@ -213,16 +219,14 @@ void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
     }
 
     contacts_->advance(state_.U, state_.Omega, deltaT);
+    const fdm::positionStep step(fdm::positionStep::of(hasHistory_, deltaT));
     forAll(state_.position, p)
     {
-        const point x =
-            hasHistory_
-          ? fdm::adamsBashforth2Step
-            (
-                state_.position[p], state_.U[p], state_.Uold[p], deltaT
-            )
-          : fdm::eulerStep(state_.position[p], state_.U[p], deltaT);
-        state_.position[p] = box_.wrap(x);
+        state_.position[p] = box_.wrap
+        (
+            state_.position[p]
+          + step.displacement(state_.U[p], state_.Uold[p])
+        );
     }
     state_.Uold = state_.U;
     hasHistory_ = true;
@@ -280,6 +284,13 @@ Foam::scalar Foam::fdmParticleCloud::correct
     fdm::sumOverRanks(sums);
     timings_.integrals += clock.timeIncrement();
 
+    // From the second outer iteration on, the contacts linearised about
+    // the end-of-step gaps of the last solved velocities
+    if (solved_)
+    {
+        contacts_->relinearise(state_.U);
+        contact_ = contacts_->loads();
+    }
     const scalar residualScale = assembleSystem(sums);
     lastSolve_ = system_.solve
     (

@@ -56,6 +56,48 @@ void Foam::particleContacts::forEachContact
 }
 
 
+void Foam::particleContacts::linearise(const UList<scalar>& gaps)
+{
+    loads_.force = Zero;
+    loads_.torque = Zero;
+    loads_.stresslet = Zero;
+    nSliding_ = 0;
+
+    fdm::pairHistory<vector> current;
+    forAll(gaps, c)
+    {
+        contactEntry& e = contacts_[c];
+        const fdm::contactGeometry& g0 = e.geometry;
+        const label i = e.k.first();
+        const label j = e.spring.j();
+
+        // The law at the linearisation gap g*, and the elastic force at
+        // the end gap g_e = g0 - dt (current w + previous w_old) as
+        // F(g*) + k'(g*) (g* - g_e), k' = -dF/d(gap): the part in the
+        // unknown approach rate w goes into the matrix, the rest here
+        fdm::contactGeometry g = g0;
+        g.gap = gaps[c];
+        vector slip = e.slip0;
+        fdm::contactForce f = law_->evaluate(g, slip);
+        const scalar k = law_->normalStiffness(g.gap, g.floorGap);
+        f.force -= k*(g.gap - g0.gap + e.oldApproach)*g0.normal;
+
+        e.linearisationGap = g.gap;
+        e.force = f.force;
+        e.spring = fdm::implicitContactSpring
+        (
+            i, j, g0.normal, e.armI, e.armJ, k*step_.dt*step_.current,
+            f.tangentialStiffness*step_.dt, e.wallVelocity
+        );
+        fdm::addContactLoads(f, g0.normal, e.armI, e.armJ, i, j, loads_);
+        current.append(e.k, slip);
+        nSliding_ += f.sliding;
+    }
+    current.sort();
+    slip_ = std::move(current);
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 Foam::particleContacts::particleContacts
@@ -71,6 +113,7 @@ Foam::particleContacts::particleContacts
     law_(fdm::contactLaw::New(dict, s)),
     walls_(mesh, "particle-wall contact"),
     gapFloor_(gapFloor),
+    step_(fdm::positionStep::euler(0)),
     loads_(nParticles),
     nPairs_(0),
     nWalls_(0),
@@ -91,62 +134,57 @@ void Foam::particleContacts::update
     const scalarField& radii,
     const fdm::periodicBox& box,
     const UList<labelPair>& near,
-    const scalar dt
+    const fdm::positionStep& step,
+    const List<vector>& Uold
 )
 {
+    step_ = step;
     contacts_.clear();
     List<vector> wallVelocity(walls_.size());
     forAll(walls_.walls(), w)
     {
         wallVelocity[w] = walls_.velocity(walls_.walls()[w]);
     }
-    loads_.force = Zero;
-    loads_.torque = Zero;
-    loads_.stresslet = Zero;
-    nPairs_ = nWalls_ = nSliding_ = nBelowFloor_ = 0;
+    nPairs_ = nWalls_ = nBelowFloor_ = 0;
     minGap_ = GREAT;
 
-    fdm::pairHistory<vector> current;
     forEachContact
     (
         positions, radii, box, near,
         [&](const key& k, const fdm::contactGeometry& g, const scalar armI,
             const scalar armJ, const label wall)
         {
-            vector slip = slip_.get(k, Zero);
-            const fdm::contactForce c = law_->evaluate(g, slip);
-            current.append(k, slip);
-
+            const label i = k.first();
             const label j = wall < 0 ? k.second() : -1;
-            fdm::addContactLoads
-            (
-                c, g.normal, armI, armJ, k.first(), j, loads_
-            );
+            const vector Uw = wall < 0 ? vector::zero : wallVelocity[wall];
             contacts_.push_back
             (
                 contactEntry
                 {
-                    k,
-                    fdm::implicitContactSpring
-                    (
-                        k.first(), j, g.normal, armI, armJ,
-                        law_->normalStiffness(g.gap, g.floorGap)*dt,
-                        c.tangentialStiffness*dt,
-                        wall < 0 ? vector::zero : wallVelocity[wall]
-                    ),
-                    c.force,
-                    (g.gap + radii[k.first()] + (wall < 0 ? radii[j] : 0))
-                   *g.normal
+                    k, g, armI, armJ, Uw, slip_.get(k, Zero),
+                    // The gap closed by the previous velocities' share of
+                    // the step (none for a first, forward-Euler step)
+                    step.previous == 0
+                  ? 0
+                  : step.dt*step.previous
+                   *(g.normal & (Uold[i] - (j < 0 ? Uw : Uold[j]))),
+                    g.gap,
+                    fdm::implicitContactSpring(i, j, g.normal, armI, armJ, 0, 0),
+                    Zero,
+                    (g.gap + radii[i] + (wall < 0 ? radii[j] : 0))*g.normal
                 }
             );
             ++(wall < 0 ? nPairs_ : nWalls_);
-            nSliding_ += c.sliding;
-            nBelowFloor_ += c.belowFloor;
+            nBelowFloor_ += g.gap < g.floorGap;
             minGap_ = min(minGap_, g.gap);
         }
     );
-    current.sort();
-    slip_ = std::move(current);
+    List<scalar> startGaps(contacts_.size());
+    forAll(startGaps, c)
+    {
+        startGaps[c] = contacts_[c].geometry.gap;
+    }
+    linearise(startGaps);
 
     if (nContacts() && minGap_ < -law_->roughness())
     {
@@ -168,6 +206,27 @@ void Foam::particleContacts::update
             << ", smallest gap " << minGap_ << ": their force is evaluated"
             << " at the floor.  Reduce deltaT if this repeats." << endl;
     }
+}
+
+
+void Foam::particleContacts::relinearise(const List<vector>& U)
+{
+    // A Newton step on the end-of-step balance of each contact: the gap
+    // that the velocities U predict, kept off the barrier's floor (at most
+    // nine tenths of the way there from the last linearisation), where
+    // the force of eq 2.57 diverges
+    List<scalar> gaps(contacts_.size());
+    forAll(gaps, c)
+    {
+        const contactEntry& e = contacts_[c];
+        const scalar predicted =
+            e.geometry.gap - e.oldApproach
+          - step_.dt*step_.current*e.spring.approach(U);
+        const scalar floorGap = e.geometry.floorGap;
+        gaps[c] =
+            max(predicted, floorGap + 0.1*(e.linearisationGap - floorGap));
+    }
+    linearise(gaps);
 }
 
 

@@ -1,7 +1,9 @@
 // Unit test of the cloud's rough contacts on a channel mesh: the normal
 // force of a pair and of a wall gap against eq 2.57 evaluated here by hand
 // (k_n given, a = 1), equal and opposite across a periodic boundary, none
-// beyond the roughness; the accumulated slip survives the restart state.
+// beyond the roughness; the accumulated slip survives the restart state; a
+// sphere driven into another far harder than the barrier's force at the
+// start gap settles on the barrier without crossing its floor.
 
 #include "particleContacts.H"
 #include "pairSearch.H"
@@ -59,7 +61,11 @@ struct contactCase
         const scalarField radii(x.size(), 1.0);
         DynamicList<labelPair> near;
         fdm::findNearPairs(box, x, radii, m.pairReach(), near);
-        m.update(x, radii, box, near, 1e-3);
+        m.update
+        (
+            x, radii, box, near, fdm::positionStep::euler(1e-3),
+            List<vector>(x.size(), Zero)
+        );
     }
 };
 
@@ -123,4 +129,70 @@ TEST(particleContacts, slipSurvivesTheRestartState)
     restarted->readState(state, loads);
     cc.update(*restarted, x);
     EXPECT_EQ(restarted->loads().force[0], Ft);
+}
+
+
+TEST(particleContacts, drivenPairSettlesOnTheBarrierWithoutCrossingTheFloor)
+{
+    // Sphere 0 held, sphere 1 pushed onto it by P against a drag R: a
+    // stiff approach, P/R dt = 0.5 h_r per step, and a load 30 times the
+    // Hertz force at full overlap, so that the balance F_el(gap) = P lies
+    // within 1e-2 h_r of the floor.  Adams-Bashforth steps, a few
+    // relinearisations per step as the outer iterations make them.
+    contactCase cc("particleContactsDriven");
+    autoPtr<contactModel> m = cc.model(2);
+    const scalar dt = 1e-3, floorGap = gapFloor;
+    const scalar P = 30*kn*std::pow(hr, 1.5), R = P*dt/(0.5*hr);
+    pointField x({point(3, 2, 5), point(5 + 0.9*hr, 2, 5)});
+    List<vector> U(2, Zero), Uold(2, Zero), Omega(2, Zero);
+    bool history = false;
+    scalar smallest = GREAT, gap = GREAT;
+    for (label step = 0; step < 60; ++step)
+    {
+        const fdm::positionStep s(fdm::positionStep::of(history, dt));
+        DynamicList<labelPair> near;
+        const scalarField radii(2, 1.0);
+        fdm::findNearPairs(cc.box, x, radii, m->pairReach(), near);
+        m->update(x, radii, cc.box, near, s, Uold);
+        for (label outer = 0; outer < 8; ++outer)
+        {
+            if (outer)
+            {
+                m->relinearise(U);
+            }
+            fdm::particleVelocitySystem system(2);
+            for (direction d = 0; d < 6; ++d)
+            {
+                system.addEntry(6 + d, 6 + d, R);
+                system.prescribe(0, d, 0);
+            }
+            system.addRhs
+            (
+                1, vector(-P, 0, 0) + m->loads().force[1],
+                m->loads().torque[1]
+            );
+            m->addTo(system, 1);
+            system.solve(1e-12, 100, U, Omega, 0);
+        }
+        m->advance(U, Omega, dt);
+        forAll(x, p)
+        {
+            x[p] += s.displacement(U[p], Uold[p]);
+        }
+        Uold = U;
+        history = true;
+        gap = x[1].x() - x[0].x() - 2;
+        smallest = min(smallest, gap);
+    }
+
+    // The balance F_el(gap) = P by bisection on eq 2.57
+    scalar lo = floorGap*(1 + 1e-12), hi = hr;
+    for (label k = 0; k < 200; ++k)
+    {
+        const scalar mid = 0.5*(lo + hi);
+        (elasticForce(mid) > P ? lo : hi) = mid;
+    }
+    EXPECT_GT(smallest, floorGap);
+    EXPECT_LT(hi - floorGap, 1e-2*hr);
+    EXPECT_NEAR(gap, hi, 1e-6*hr);
 }

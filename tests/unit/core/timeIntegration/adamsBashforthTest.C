@@ -1,6 +1,7 @@
 // Unit tests for the particle position update (adamsBashforth.H)
 
 #include "adamsBashforth.H"
+#include "point.H"
 
 #include <gtest/gtest.h>
 
@@ -21,7 +22,8 @@ TEST(adamsBashforth, exactForVelocityLinearInTime)
     for (label k = 1; k < 50; ++k)
     {
         const scalar t = k*dt;
-        x = fdm::adamsBashforth2Step(x, a + b*t, a + b*(t - dt), dt);
+        x += fdm::positionStep::adamsBashforth2(dt)
+            .displacement(a + b*t, a + b*(t - dt));
     }
     const scalar T = 50*dt;
     const point exact = a*T + 0.5*b*T*T;
@@ -40,13 +42,14 @@ TEST(adamsBashforth, secondOrderConvergence)
     auto integrate = [&](const label n)
     {
         const scalar dt = 2.0/n;
-        point x = fdm::eulerStep(point::zero, velocity(0), dt);
+        point x = fdm::positionStep::of(false, dt).displacement
+        (
+            velocity(0), vector::zero
+        );
         for (label k = 1; k < n; ++k)
         {
-            x = fdm::adamsBashforth2Step
-            (
-                x, velocity(k*dt), velocity((k - 1)*dt), dt
-            );
+            x += fdm::positionStep::of(true, dt)
+                .displacement(velocity(k*dt), velocity((k - 1)*dt));
         }
         const point exact(std::sin(2.0), std::cos(2.0) - 1.0, 2.0);
         return mag(x - exact);
