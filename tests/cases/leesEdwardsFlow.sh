@@ -5,24 +5,15 @@
 # offset 0.18 is 2.88 cells, not a whole number.  The uniform shear
 # u_x = y - 1/2 is exact (tolerance 1e-10, the linear solvers at 1e-14),
 # with PCG and with GAMG.
-# A split along y (across the sheared faces) and particles in the box
-# stop with what to change.
+# A split along y (across the sheared faces) stops with what to change.
+# Particles in the sheared box: shearedSphereLeesEdwards.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir leesEdwardsFlow)
 cloneCase planeChannel "$work"
+leesEdwardsBox "$work" || exit 1
 (
     cd "$work" || exit 1
-    sed -i -e 's/bottomWall { type wall;/bottomWall { type cyclic; neighbourPatch topWall;/' \
-        -e 's/topWall    { type wall;/topWall    { type cyclic; neighbourPatch bottomWall;/' \
-        system/blockMeshDict
-    for field in U p
-    do
-        foamDictionary -entry boundaryField -set "{ \"(bottomWall|topWall)\"
-            { type leesEdwards; patchType cyclic; shearRate 1; }
-            \"(left|right|front|back)\" { type cyclic; } }" 0/$field \
-            > /dev/null
-    done
     foamDictionary -entry endTime -set 0.93 system/controlDict > /dev/null
     foamDictionary -entry deltaT -set 0.93 system/controlDict > /dev/null
     foamDictionary -entry coeffs.n -set "(1 1 2)" system/decomposeParDict \
@@ -75,14 +66,3 @@ CHECK
     echo "   y split: stops with 'decompose along z only'"
 ) || exit 1
 
-# Particles in the sheared box: refused
-mkdir -p "$work/particles" && cp -r "$work"/{0,constant,system} "$work/particles"/
-foamDictionary -entry rho -add 1 "$work/particles/constant/transportProperties" > /dev/null
-cat > "$work/particles/constant/particleProperties" <<'DICT'
-FoamFile { version 2.0; format ascii; class dictionary; object particleProperties; }
-coupling { lambdaTolerance 1e-4; particleSolveTolerance 1e-6; }
-groups { suspended { } }
-particles ( (suspended (0.125 0.5 0.125) 0.05) );
-DICT
-expectStop "$work/particles" fdmSuspensionFoam \
-    "particles across sheared periodic faces are not supported yet"

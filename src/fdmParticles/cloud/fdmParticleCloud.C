@@ -10,6 +10,7 @@
 #include "processorCyclicPolyPatch.H"
 #include "constants.H"
 #include "checkKeywords.H"
+#include "leesEdwardsShear.H"
 #include <sstream>
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
@@ -280,6 +281,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
 
     delta_ = meshSpacing();
     box_ = meshBox();
+    fdm::setLeesEdwardsShear(mesh_, box_);
     cellBins_.reset(new fdm::pointBins(mesh.C().primitiveField(), delta_*4));
 
     readCoupling();

@@ -13,6 +13,7 @@ Description
 #include "clockTime.H"
 #include "sumOverRanks.H"
 #include "pairSearch.H"
+#include "leesEdwardsShear.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -219,14 +220,17 @@ void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
     }
 
     contacts_->advance(state_.U, state_.Omega, deltaT);
+    // The sheared images of the new time (Lees-Edwards): a particle
+    // wrapped across the sheared faces takes the flow's velocity there
+    fdm::setLeesEdwardsShear(mesh_, box_);
     const fdm::positionStep step(fdm::positionStep::of(hasHistory_, deltaT));
     forAll(state_.position, p)
     {
-        state_.position[p] = box_.wrap
-        (
+        const point x =
             state_.position[p]
-          + step.displacement(state_.U[p], state_.Uold[p])
-        );
+          + step.displacement(state_.U[p], state_.Uold[p]);
+        state_.U[p] = box_.wrapVelocity(x, state_.U[p]);
+        state_.position[p] = box_.wrap(x);
     }
     state_.Uold = state_.U;
     hasHistory_ = true;

@@ -14,7 +14,6 @@ Description
 #include "particleStateFile.H"
 #include "checkKeywords.H"
 #include "readBounded.H"
-#include "leesEdwardsFvPatchField.H"
 
 // * * * * * * * * * * * * * * * Local Functions  * * * * * * * * * * * * * //
 
@@ -22,29 +21,6 @@ namespace
 {
 
 using namespace Foam;
-
-//- Particles are not yet imaged across Lees-Edwards faces: a run with both
-//  would couple them to the sheared flow as if the box were plainly
-//  periodic
-void refuseShearedImages(const fvMesh& mesh, const dictionary& dict)
-{
-    if (!mesh.foundObject<volVectorField>("U"))
-    {
-        return;
-    }
-    for (const auto& pf : mesh.lookupObject<volVectorField>("U").boundaryField())
-    {
-        if (pf.type() == leesEdwardsFvPatchField<vector>::typeName)
-        {
-            FatalIOErrorInFunction(dict)
-                << "U has a leesEdwards boundary (patch "
-                << pf.patch().name() << "): particles across sheared"
-                << " periodic faces are not supported yet; run it"
-                << " particle-free (remove " << dict.name() << ") or"
-                << " between walls" << exit(FatalIOError);
-        }
-    }
-}
 
 void requirePositive
 (
@@ -186,7 +162,6 @@ void Foam::fdmParticleCloud::readParticles()
         list.position[i] = box_.wrap(list.position[i]);
     }
     fdm::checkParticleList(list.position, list.radius, box_, list.source);
-    refuseShearedImages(mesh_, dict_);
     state_.radius.transfer(list.radius);
     state_.position.transfer(list.position);
 }

@@ -19,21 +19,27 @@ void Foam::particleContacts::forEachContact
     const Action& action
 ) const
 {
-    // action(key, geometry, arm of i, arm of j, wall or -1): the arm is the
-    // distance from the centre to the contact point along n, the weight
-    // a_i r/(a_i + a_j) of eqs 2.64 and 2.69
+    // action(key, geometry, arm of i, arm of j, wall or -1, velocity of
+    // the image of j relative to j): the arm is the distance from the
+    // centre to the contact point along n, the weight a_i r/(a_i + a_j) of
+    // eqs 2.64 and 2.69
     DynamicList<labelPair> touching;
     fdm::selectNearPairs(box, positions, radii, pairReach(), near, touching);
     for (const labelPair& pq : touching)
     {
         const label i = pq.first(), j = pq.second();
-        const vector r = box.minimumImage(positions[j] - positions[i]);
+        const vector between = positions[j] - positions[i];
+        const vector r = box.minimumImage(between);
         const scalar d = mag(r);
         const scalar sum = radii[i] + radii[j];
         const fdm::contactGeometry g{r/d, d - sum, 0.5*gapFloor_*sum};
         if (law_->touching(g.gap))
         {
-            action(key(i, j), g, radii[i]*d/sum, radii[j]*d/sum, -1);
+            action
+            (
+                key(i, j), g, radii[i]*d/sum, radii[j]*d/sum, -1,
+                box.imageVelocity(between)
+            );
         }
     }
     forAll(walls_.walls(), w)
@@ -49,7 +55,7 @@ void Foam::particleContacts::forEachContact
             };
             if (law_->touching(g.gap))
             {
-                action(key(i, -1 - w), g, radii[i], 0, w);
+                action(key(i, -1 - w), g, radii[i], 0, w, vector::zero);
             }
         }
     }
@@ -87,7 +93,7 @@ void Foam::particleContacts::linearise(const UList<scalar>& gaps)
         e.spring = fdm::implicitContactSpring
         (
             i, j, g0.normal, e.armI, e.armJ, k*step_.dt*step_.current,
-            f.tangentialStiffness*step_.dt, e.wallVelocity
+            f.tangentialStiffness*step_.dt, e.knownVelocity
         );
         fdm::addContactLoads(f, g0.normal, e.armI, e.armJ, i, j, loads_);
         current.append(e.k, slip);
@@ -152,22 +158,23 @@ void Foam::particleContacts::update
     (
         positions, radii, box, near,
         [&](const key& k, const fdm::contactGeometry& g, const scalar armI,
-            const scalar armJ, const label wall)
+            const scalar armJ, const label wall, const vector& imageU)
         {
             const label i = k.first();
             const label j = wall < 0 ? k.second() : -1;
-            const vector Uw = wall < 0 ? vector::zero : wallVelocity[wall];
+            // The partner's known velocity: the wall's, or its image's
+            const vector known = wall < 0 ? imageU : wallVelocity[wall];
             contacts_.push_back
             (
                 contactEntry
                 {
-                    k, g, armI, armJ, Uw, slip_.get(k, Zero),
+                    k, g, armI, armJ, known, slip_.get(k, Zero),
                     // The gap closed by the previous velocities' share of
                     // the step (none for a first, forward-Euler step)
                     step.previous == 0
                   ? 0
-                  : step.dt*step.previous
-                   *(g.normal & (Uold[i] - (j < 0 ? Uw : Uold[j]))),
+                  : step.dt*step.previous*(g.normal & (Uold[i] - known
+                      - (j < 0 ? vector::zero : Uold[j]))),
                     g.gap,
                     fdm::implicitContactSpring(i, j, g.normal, armI, armJ, 0, 0),
                     Zero,
@@ -213,8 +220,8 @@ void Foam::particleContacts::relinearise(const List<vector>& U)
 {
     // A Newton step on the end-of-step balance of each contact: the gap
     // that the velocities U predict, kept off the barrier's floor (at most
-    // nine tenths of the way there from the last linearisation), where
-    // the force of eq 2.57 diverges
+    // nine tenths of the way to it from the last linearisation), where the
+    // force of eq 2.57 diverges
     List<scalar> gaps(contacts_.size());
     forAll(gaps, c)
     {
@@ -222,9 +229,9 @@ void Foam::particleContacts::relinearise(const List<vector>& U)
         const scalar predicted =
             e.geometry.gap - e.oldApproach
           - step_.dt*step_.current*e.spring.approach(U);
+        const scalar last = e.linearisationGap;
         const scalar floorGap = e.geometry.floorGap;
-        gaps[c] =
-            max(predicted, floorGap + 0.1*(e.linearisationGap - floorGap));
+        gaps[c] = max(predicted, floorGap + 0.1*(last - floorGap));
     }
     linearise(gaps);
 }

@@ -234,7 +234,8 @@ void Foam::fdm::pairSubGridMatrix::addTo
     particleVelocitySystem& sys,
     const label p,
     const label q,
-    const scalar scale
+    const scalar scale,
+    const vector& qImageVelocity
 ) const
 {
     if (p == q)
@@ -246,6 +247,14 @@ void Foam::fdm::pairSubGridMatrix::addTo
 
     const label n = particleVelocitySystem::nDof;
     const label offset[2] = {n*p, n*q};
+
+    if (qImageVelocity != vector::zero)
+    {
+        vector F1, T1, F2, T2;
+        forceTorque(Zero, Zero, qImageVelocity, Zero, F1, T1, F2, T2);
+        sys.addRhs(p, scale*F1, scale*T1);
+        sys.addRhs(q, scale*F2, scale*T2);
+    }
 
     for (label i = 0; i < nDof; ++i)
     {

@@ -9,6 +9,7 @@
 #include "tensor.H"
 
 #include "randomGeometry.H"
+#include "pairFrameShift.H"
 
 #include <gtest/gtest.h>
 
@@ -491,6 +492,20 @@ TEST(pairSubGridMatrix, addsIntoParticleSystem)
         EXPECT_LT(mag(Us[i] - U[i]), 1e-8);
         EXPECT_LT(mag(Ws[i] - W[i]), 1e-8);
     }
+}
+
+
+TEST(pairSubGridMatrix, imageVelocityShiftsThePartnersFrame)
+{
+    const pairMatrix R(nearContactBase(1e-3), 2 + 1e-3, randomUnit());
+    const vector v(0.8, 0, 0);
+    const scalar error = unitTest::pairFrameShiftError
+    (
+        [&](fdm::particleVelocitySystem& sys) { R.addTo(sys, 0, 1, 1.5, v); },
+        [&](fdm::particleVelocitySystem& sys) { R.addTo(sys, 0, 1, 1.5); },
+        v
+    );
+    EXPECT_LT(error, 1e-10);
 }
 
 

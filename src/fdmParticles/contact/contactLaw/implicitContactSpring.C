@@ -17,7 +17,7 @@ Foam::fdm::implicitContactSpring::implicitContactSpring
     const scalar armJ,
     const scalar normalStiffnessTimesDt,
     const scalar tangentialStiffnessTimesDt,
-    const vector& wallVelocity
+    const vector& knownVelocity
 )
 :
     i_(i),
@@ -27,7 +27,7 @@ Foam::fdm::implicitContactSpring::implicitContactSpring
     armJ_(armJ),
     kn_(normalStiffnessTimesDt),
     kt_(tangentialStiffnessTimesDt),
-    wallVelocity_(wallVelocity)
+    knownVelocity_(knownVelocity)
 {}
 
 
@@ -62,6 +62,15 @@ void Foam::fdm::implicitContactSpring::operators(scalar B[4][12]) const
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
+Foam::vector Foam::fdm::implicitContactSpring::partnerVelocity
+(
+    const UList<vector>& U
+) const
+{
+    return j_ >= 0 ? U[j_] + knownVelocity_ : knownVelocity_;
+}
+
+
 Foam::vector Foam::fdm::implicitContactSpring::slip
 (
     const UList<vector>& U,
@@ -70,8 +79,11 @@ Foam::vector Foam::fdm::implicitContactSpring::slip
 {
     return
         j_ >= 0
-      ? slipVelocity(n_, U[i_], Omega[i_], armI_, U[j_], Omega[j_], armJ_)
-      : slipVelocity(n_, U[i_], Omega[i_], armI_, wallVelocity_, Zero, 0);
+      ? slipVelocity
+        (
+            n_, U[i_], Omega[i_], armI_, partnerVelocity(U), Omega[j_], armJ_
+        )
+      : slipVelocity(n_, U[i_], Omega[i_], armI_, knownVelocity_, Zero, 0);
 }
 
 
@@ -80,7 +92,7 @@ Foam::scalar Foam::fdm::implicitContactSpring::approach
     const UList<vector>& U
 ) const
 {
-    return n_ & (U[i_] - (j_ >= 0 ? U[j_] : wallVelocity_));
+    return n_ & (U[i_] - partnerVelocity(U));
 }
 
 
@@ -116,23 +128,32 @@ void Foam::fdm::implicitContactSpring::addTo
         }
     }
 
-    if (j_ < 0)
+    if (knownVelocity_ != vector::zero)
     {
-        // The wall part of the implicit force, -K (B_i u_i - B_w U_w), is
-        // a known load: B_w U_w = (P U_w, n.U_w)
-        const vector PUw = wallVelocity_ - (wallVelocity_ & n_)*n_;
-        const scalar wallRows[4] =
-            {kt_*PUw.x(), kt_*PUw.y(), kt_*PUw.z(), kn_*(n_ & wallVelocity_)};
-        vector F(Zero), T(Zero);
-        for (label c = 0; c < 3; ++c)
+        // The known part of the partner's velocity (a wall's, or the image
+        // velocity of j) in -K B u is a load on both: rows y = B_j v
+        scalar y[4];
+        for (label r = 0; r < 4; ++r)
+        {
+            y[r] = 0;
+            for (label c = 0; c < 3; ++c)
+            {
+                y[r] += B[r][6 + c]*knownVelocity_[c];
+            }
+        }
+        vector load[4] = {Zero, Zero, Zero, Zero};
+        for (label a = 0; a < nCols; ++a)
         {
             for (label r = 0; r < 4; ++r)
             {
-                F[c] += B[r][c]*wallRows[r];
-                T[c] += B[r][3 + c]*wallRows[r];
+                load[a/3][a % 3] -= weight[r]*B[r][a]*y[r];
             }
         }
-        system.addRhs(i_, scale*F, scale*T);
+        system.addRhs(i_, scale*load[0], scale*load[1]);
+        if (j_ >= 0)
+        {
+            system.addRhs(j_, scale*load[2], scale*load[3]);
+        }
     }
 }
 

@@ -18,7 +18,8 @@ Foam::fdm::periodicBox::periodicBox
     min_(minCorner),
     span_(maxCorner - minCorner),
     periodic_(periodic),
-    shearOffset_(0)
+    shearOffset_(0),
+    shearVelocity_(0)
 {
     for (direction d = 0; d < 3; ++d)
     {
@@ -33,7 +34,7 @@ Foam::fdm::periodicBox::periodicBox
 }
 
 
-void Foam::fdm::periodicBox::setShearOffset(const scalar s)
+void Foam::fdm::periodicBox::requireShearable() const
 {
     if (!periodic_[0] || !periodic_[1])
     {
@@ -41,7 +42,20 @@ void Foam::fdm::periodicBox::setShearOffset(const scalar s)
             << "Lees-Edwards images need a box periodic in x and y"
             << abort(FatalError);
     }
+}
+
+
+void Foam::fdm::periodicBox::setShearOffset(const scalar s)
+{
+    requireShearable();
     shearOffset_ = s - span_[0]*std::floor(s/span_[0]);
+}
+
+
+void Foam::fdm::periodicBox::setShearVelocity(const scalar v)
+{
+    requireShearable();
+    shearVelocity_ = v;
 }
 
 
@@ -77,15 +91,35 @@ Foam::point Foam::fdm::periodicBox::wrap(const point& p) const
 }
 
 
+Foam::vector Foam::fdm::periodicBox::wrapVelocity
+(
+    const point& p,
+    const vector& U
+) const
+{
+    return U - imageVelocity(periodsAlongY(p));
+}
+
+
+Foam::label Foam::fdm::periodicBox::minimumImagePeriodsY(const vector& d) const
+{
+    return periodic_[1] ? label(std::round(d[1]/span_[1])) : 0;
+}
+
+
+Foam::vector Foam::fdm::periodicBox::imageVelocity(const vector& d) const
+{
+    // minimumImage moves the far end down by the periods it removes
+    return imageVelocity(-minimumImagePeriodsY(d));
+}
+
+
 Foam::vector Foam::fdm::periodicBox::minimumImage(const vector& d) const
 {
     vector m(d);
-    if (periodic_[1])
-    {
-        const scalar k = std::round(m[1]/span_[1]);
-        m[0] -= k*shearOffset_;
-        m[1] -= k*span_[1];
-    }
+    const label k = minimumImagePeriodsY(m);
+    m[0] -= k*shearOffset_;
+    m[1] -= k*span_[1];
     for (direction i = 0; i < 3; ++i)
     {
         if (periodic_[i])

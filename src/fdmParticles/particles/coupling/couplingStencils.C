@@ -7,10 +7,16 @@
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::List<Foam::vector>
-Foam::fdm::couplingStencils::imageShifts(const periodicBox& box)
+Foam::List<Foam::fdm::couplingStencils::image>
+Foam::fdm::couplingStencils::images(const periodicBox& box)
 {
-    DynamicList<vector> shifts(27);
+    // Across y: the offset within +-L_x/2, so that the x images -1, 0, 1
+    // around it cover the box and the supports reaching into it
+    const scalar Lx = box.span().x();
+    const scalar offset =
+        box.shearOffset() - Lx*std::round(box.shearOffset()/Lx);
+
+    DynamicList<image> found(27);
     for (label k = -1; k <= 1; ++k)
     for (label j = -1; j <= 1; ++j)
     for (label i = -1; i <= 1; ++i)
@@ -28,10 +34,11 @@ Foam::fdm::couplingStencils::imageShifts(const periodicBox& box)
         }
         if (valid)
         {
-            shifts.append(shift);
+            shift.x() += j*offset;
+            found.append(image{shift, box.imageVelocity(j).x()});
         }
     }
-    return List<vector>(std::move(shifts));
+    return List<image>(std::move(found));
 }
 
 
@@ -52,9 +59,10 @@ void Foam::fdm::couplingStencils::build
     Ju_.clear();
     Jlambda_.clear();
     owner_.clear();
+    imageUx_.clear();
     consistentOverlaps_ = consistentOverlaps;
 
-    const List<vector> shifts(imageShifts(box));
+    const List<image> shifts(images(box));
     DynamicList<label> found;
     forAll(positions, p)
     {
@@ -62,9 +70,9 @@ void Foam::fdm::couplingStencils::build
         const scalar a = radii[p];
         const scalar R = indicator.supportRadius(a);
 
-        for (const vector& shift : shifts)
+        for (const image& im : shifts)
         {
-            const point centre = positions[p] + shift;
+            const point centre = positions[p] + im.shift;
             found.clear();
             cellBins.findInSphere(centre, R, found);
             for (const label celli : found)
@@ -75,6 +83,7 @@ void Foam::fdm::couplingStencils::build
                 offset_.append(r);
                 Ju_.append(indicator.Ju(mag(r), a));
                 Jlambda_.append(1);
+                imageUx_.append(im.Ux);
             }
         }
     }
@@ -130,7 +139,8 @@ Foam::fdm::couplingStencils::integrals
         {
             const label c = cell_[e];
             const vector& r = offset_[e];
-            const vector wu = (Jintegral_[e]*V[c])*u[c];
+            const vector wu =
+                (Jintegral_[e]*V[c])*(u[c] - vector(integralUx_[e], 0, 0));
             const vector wl = (Jlambda_[e]*V[c])*lambda[c];
             fu += wu;
             tu += r ^ wu;
@@ -157,8 +167,8 @@ void Foam::fdm::couplingStencils::correctLambda
         for (label e = start_[p]; e < start_[p + 1]; ++e)
         {
             const label c = cell_[e];
-            const vector rigid = U[p] + (Omega[p] ^ offset_[e]);
-            lambda[c] += (Jlambda_[e]/alphaLambda)*(rigid - u[c]);
+            lambda[c] +=
+                (Jlambda_[e]/alphaLambda)*(rigid(p, e, U, Omega) - u[c]);
         }
     }
 }
@@ -183,8 +193,7 @@ void Foam::fdm::couplingStencils::correctVelocity
                 continue;
             }
             const label c = cell_[e];
-            const vector rigid = U[p] + (Omega[p] ^ offset_[e]);
-            u[c] += Ju_[e]*(rigid - u[c]);
+            u[c] += Ju_[e]*(rigid(p, e, U, Omega) - u[c]);
         }
     }
 }

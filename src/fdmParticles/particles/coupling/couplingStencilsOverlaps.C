@@ -20,6 +20,7 @@ void Foam::fdm::couplingStencils::findOverlaps(const labelUList& count)
     // The thesis form: J_u weighs the velocity integral and the pseudo-mass
     Jintegral_ = Ju_;
     Jmass_ = Ju_;
+    integralUx_ = imageUx_;
     overlapStart_.setSize(1, 0);
     overlapEntries_.clear();
     overlapJ_.clear();
@@ -64,11 +65,17 @@ void Foam::fdm::couplingStencils::findOverlaps(const labelUList& count)
             unmoved *= 1 - Ju_[overlapEntries_[k]];
         }
         overlapJ_[i] = 1 - unmoved;
+        scalar meanUx = 0;
         for (label k = overlapStart_[i]; k < overlapStart_[i + 1]; ++k)
         {
             const label e = overlapEntries_[k];
             Jintegral_[e] = overlapJ_[i]*Jlambda_[e];
             Jmass_[e] = overlapJ_[i]*sqr(Jlambda_[e]);
+            meanUx += Jlambda_[e]*imageUx_[e];
+        }
+        for (label k = overlapStart_[i]; k < overlapStart_[i + 1]; ++k)
+        {
+            integralUx_[overlapEntries_[k]] = meanUx;
         }
     }
 }
@@ -88,7 +95,7 @@ void Foam::fdm::couplingStencils::correctOverlapVelocity
         {
             const label e = overlapEntries_[k];
             const label p = owner_[e];
-            ubar += Jlambda_[e]*(U[p] + (Omega[p] ^ offset_[e]));
+            ubar += Jlambda_[e]*rigid(p, e, U, Omega);
         }
         const label c = cell_[overlapEntries_[overlapStart_[i]]];
         u[c] += overlapJ_[i]*(ubar - u[c]);

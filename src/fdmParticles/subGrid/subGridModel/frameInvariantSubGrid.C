@@ -271,7 +271,8 @@ void Foam::frameInvariantSubGrid::update
         const bool swap = radii[pq.second()] < radii[pq.first()];
         const label p = swap ? pq.second() : pq.first();
         const label q = swap ? pq.first() : pq.second();
-        const vector rv = box.minimumImage(positions[q] - positions[p]);
+        const vector d = positions[q] - positions[p];
+        const vector rv = box.minimumImage(d);
         const scalar r = mag(rv);
         const scalar xi = 2*r/(radii[p] + radii[q]) - 2;
         if (xi > pairCutoff_)
@@ -281,7 +282,7 @@ void Foam::frameInvariantSubGrid::update
         const fdm::resistanceTable& table = pairTable(radii[q]/radii[p]);
         pairs_.push_back
         (
-            pairEntry{p, q, fdm::pairSubGridMatrix
+            pairEntry{p, q, box.imageVelocity(d), fdm::pairSubGridMatrix
             (
                 table.pairFunctions(xi, radii[p]), r, rv/r
             )}
@@ -342,7 +343,7 @@ void Foam::frameInvariantSubGrid::addTo
 {
     for (const pairEntry& e : pairs_)
     {
-        e.matrix.addTo(system, e.p, e.q, nu);
+        e.matrix.addTo(system, e.p, e.q, nu, e.qImageVelocity);
     }
     for (const wallEntry& e : wallGaps_)
     {
@@ -365,7 +366,7 @@ void Foam::frameInvariantSubGrid::addHydrodynamics
     {
         const vector& U1 = U[e.p];
         const vector& W1 = Omega[e.p];
-        const vector& U2 = U[e.q];
+        const vector U2 = U[e.q] + e.qImageVelocity;
         const vector& W2 = Omega[e.q];
         vector F1, T1, F2, T2;
         e.matrix.forceTorque(U1, W1, U2, W2, F1, T1, F2, T2);

@@ -4,6 +4,7 @@
 
 #include "implicitContactSpring.H"
 #include "contactLoads.H"
+#include "pairFrameShift.H"
 
 #include <gtest/gtest.h>
 
@@ -97,4 +98,19 @@ TEST(implicitContactSpring, rollingOnAMovingWallDoesNotSlip)
     const List<vector> withWall({Uw});
     const List<vector> still({Zero});
     EXPECT_NEAR(mag(wall.force(withWall, still).force), 0, 1e-15);
+}
+
+
+TEST(implicitContactSpring, imageVelocityShiftsThePartnersFrame)
+{
+    const pairSetup s;
+    const vector v(0.8, 0, 0);
+    const fdm::implicitContactSpring image{0, 1, s.n, s.li, s.lj, 11.0, 7.0, v};
+    const scalar error = unitTest::pairFrameShiftError
+    (
+        [&](fdm::particleVelocitySystem& sys) { image.addTo(sys, 1); },
+        [&](fdm::particleVelocitySystem& sys) { s.spring.addTo(sys, 1); },
+        v
+    );
+    EXPECT_LT(error, 1e-12);
 }

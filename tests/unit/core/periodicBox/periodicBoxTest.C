@@ -148,10 +148,41 @@ TEST(periodicBox, leesEdwardsImagesShiftAlongX)
 }
 
 
+TEST(periodicBox, leesEdwardsVelocitiesFollowTheAffineShear)
+{
+    // u_x = gammaDot y continued through the sheared faces: a point's
+    // velocity after the wrap, and the relative velocity of the image a
+    // pair sees, are those of that flow
+    const scalar gammaDot = 0.7, Ly = 8;
+    fdm::periodicBox box(point(0, 0, 0), point(10, Ly, 6),
+        FixedList<bool, 3>({true, true, true}));
+    box.setShearOffset(gammaDot*Ly*3.3);
+    box.setShearVelocity(gammaDot*Ly);
+    auto affine = [&](const point& x) { return vector(gammaDot*x.y(), 0, 0); };
+
+    for (const point& x : {point(1, 9, 2), point(4, -0.5, 1), point(2, 17, 3),
+        point(5, 3, 3)})
+    {
+        const vector U = affine(x) + vector(0.1, -0.2, 0.3);
+        const vector wrapped = box.wrapVelocity(x, U);
+        EXPECT_LT(mag(wrapped - U - (affine(box.wrap(x)) - affine(x))), 1e-12)
+            << x.x() << ' ' << x.y();
+    }
+
+    // A near the top, B near the bottom: B's image above A moves at
+    // B's velocity + gammaDot L_y; A's image below B at A's - gammaDot L_y
+    const point A(5, 7.5, 1), B(2.2, 0.4, 1);
+    EXPECT_LT(mag(box.imageVelocity(B - A) - vector(gammaDot*Ly, 0, 0)), 1e-12);
+    EXPECT_LT(mag(box.imageVelocity(A - B) + vector(gammaDot*Ly, 0, 0)), 1e-12);
+    EXPECT_EQ(box.imageVelocity(point(5, 5, 1) - A), vector::zero);
+}
+
+
 TEST(periodicBox, leesEdwardsNeedsXAndYPeriodic)
 {
     fdm::periodicBox box(point(0, 0, 0), point(1, 1, 1),
         FixedList<bool, 3>({true, false, true}));
     FatalError.throwExceptions();
     EXPECT_ANY_THROW(box.setShearOffset(0.5));
+    EXPECT_ANY_THROW(box.setShearVelocity(0.5));
 }

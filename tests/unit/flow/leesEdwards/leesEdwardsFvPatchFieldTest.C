@@ -8,10 +8,8 @@
 // of whole cells, within 2 % at a fractional one (the first-order
 // interpolation along the sheared faces).
 
-#include "leesEdwardsFvPatchField.H"
+#include "shearedBox.H"
 #include "fvm.H"
-#include "unitTestCase.H"
-#include "unitTestHelpers.H"
 #include <gtest/gtest.h>
 #include <cmath>
 
@@ -19,61 +17,6 @@ using namespace Foam;
 
 namespace
 {
-
-//- A unit box of n^3 cells, cyclic in x and z, leesEdwards at y = 0, 1
-struct shearedBox
-{
-    unitTest::scratchCase sc;
-    autoPtr<fvMesh> mesh;
-
-    shearedBox(const word& name, const label n, const scalar time)
-    :
-        sc(name)
-    {
-        sc.writeFile
-        (
-            "system/fvSolution",
-            "solvers { \"(psi|U)\" { solver PCG; preconditioner DIC;"
-            " tolerance 1e-14; relTol 0; maxIter 5000; } }"
-        );
-        mesh = unitTest::boxMesh
-        (
-            sc.runTime(), labelVector(n, n, n), 1.0/n,
-            wordList(6, "cyclic")
-        );
-        sc.runTime().setTime(time, 1);
-    }
-
-    template<class Type>
-    tmp<GeometricField<Type, fvPatchField, volMesh>> field
-    (
-        const word& name
-    ) const
-    {
-        return tmp<GeometricField<Type, fvPatchField, volMesh>>::New
-        (
-            IOobject(name, mesh->time().timeName(), *mesh),
-            *mesh,
-            unitTest::parse
-            ((
-                "dimensions [0 0 0 0 0 0 0]; internalField uniform "
-                + std::string(pTraits<Type>::rank ? "(0 0 0)" : "0") + ";"
-                " boundaryField { \"(xMin|xMax|zMin|zMax)\" { type cyclic; }"
-                " \"(yMin|yMax)\" { type leesEdwards; patchType cyclic; shearRate 1; } }"
-            ).c_str())
-        );
-    }
-
-    const fvPatchScalarField& side
-    (
-        const volScalarField& psi,
-        const word& name
-    ) const
-    {
-        return psi.boundaryField()[mesh->boundaryMesh().findPatchID(name)];
-    }
-};
-
 
 //- The largest |a - b| after removing each field's mean (a periodic
 //  Laplace problem fixes its solution up to a constant)
