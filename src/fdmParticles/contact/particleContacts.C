@@ -176,7 +176,10 @@ void Foam::particleContacts::update
                   : step.dt*step.previous*(g.normal & (Uold[i] - known
                       - (j < 0 ? vector::zero : Uold[j]))),
                     g.gap,
-                    fdm::implicitContactSpring(i, j, g.normal, armI, armJ, 0, 0),
+                    fdm::implicitContactSpring
+                    (
+                        i, j, g.normal, armI, armJ, 0, 0
+                    ),
                     Zero,
                     (g.gap + radii[i] + (wall < 0 ? radii[j] : 0))*g.normal
                 }
