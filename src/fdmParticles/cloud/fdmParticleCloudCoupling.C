@@ -288,8 +288,9 @@ Foam::scalar Foam::fdmParticleCloud::correct
     fdm::sumOverRanks(sums);
     timings_.integrals += clock.timeIncrement();
 
-    // From the second outer iteration on, the contacts linearised about
-    // the end-of-step gaps of the last solved velocities
+    // From the second outer iteration on, the contacts linearised again
+    // about the end-of-step gaps of the last solved velocities (as often
+    // as the contact model does: particleContacts twice a step)
     if (solved_)
     {
         contacts_->relinearise(state_.U);
