@@ -93,7 +93,7 @@ void Foam::particleContacts::linearise(const UList<scalar>& gaps)
         e.spring = fdm::implicitContactSpring
         (
             i, j, g0.normal, e.armI, e.armJ, k*step_.dt*step_.current,
-            f.tangentialStiffness*step_.dt, e.knownVelocity
+            f.tangentialStiffness*step_.dt, e.spring.knownVelocity()
         );
         fdm::addContactLoads(f, g0.normal, e.armI, e.armJ, i, j, loads_);
         current.append(e.k, slip);
@@ -165,23 +165,23 @@ void Foam::particleContacts::update
             const label i = k.first();
             const label j = wall < 0 ? k.second() : -1;
             // The partner's known velocity: the wall's, or its image's
-            const vector known = wall < 0 ? imageU : wallVelocity[wall];
+            const fdm::implicitContactSpring spring
+            (
+                i, j, g.normal, armI, armJ, 0, 0,
+                wall < 0 ? imageU : wallVelocity[wall]
+            );
             contacts_.push_back
             (
                 contactEntry
                 {
-                    k, g, armI, armJ, known, slip_.get(k, Zero),
+                    k, g, armI, armJ, slip_.get(k, Zero),
                     // The gap closed by the previous velocities' share of
                     // the step (none for a first, forward-Euler step)
                     step.previous == 0
                   ? 0
-                  : step.dt*step.previous*(g.normal & (Uold[i] - known
-                      - (j < 0 ? vector::zero : Uold[j]))),
+                  : step.dt*step.previous*spring.approach(Uold),
                     g.gap,
-                    fdm::implicitContactSpring
-                    (
-                        i, j, g.normal, armI, armJ, 0, 0
-                    ),
+                    spring,
                     Zero,
                     (g.gap + radii[i] + (wall < 0 ? radii[j] : 0))*g.normal
                 }
