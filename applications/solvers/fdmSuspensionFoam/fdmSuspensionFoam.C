@@ -51,6 +51,7 @@ Usage
 #include "readableDictionaries.H"
 #include "layerMeanCorrection.H"
 #include "transposeViscousTerm.H"
+#include "shareLeesEdwardsCoupling.H"
 #include "schemeEntries.H"
 #include "heapReuse.H"
 #include "planeWalls.H"

@@ -162,8 +162,27 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 :
     cyclicFvPatchField<Type>(p, iF),
     shearRate_(0),
+    jumps_(true),
     mapTimeIndex_(-1)
 {}
+
+
+template<class Type>
+Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
+(
+    const fvPatch& p,
+    const DimensionedField<Type, volMesh>& iF,
+    const scalar shearRate,
+    const bool jumps
+)
+:
+    cyclicFvPatchField<Type>(p, iF),
+    shearRate_(shearRate),
+    jumps_(jumps),
+    mapTimeIndex_(-1)
+{
+    this->evaluate(Pstream::commsTypes::blocking);
+}
 
 
 template<class Type>
@@ -176,6 +195,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 :
     cyclicFvPatchField<Type>(p, iF, dict),
     shearRate_(dict.get<scalar>("shearRate")),
+    jumps_(true),
     mapTimeIndex_(-1)
 {
     // A decomposition across the sheared faces turns part of them into
@@ -210,6 +230,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 :
     cyclicFvPatchField<Type>(ptf, p, iF, mapper),
     shearRate_(ptf.shearRate_),
+    jumps_(ptf.jumps_),
     mapTimeIndex_(-1)
 {}
 
@@ -223,6 +244,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
     cyclicLduInterfaceField(),
     cyclicFvPatchField<Type>(ptf),
     shearRate_(ptf.shearRate_),
+    jumps_(ptf.jumps_),
     mapTimeIndex_(-1)
 {}
 
@@ -236,6 +258,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 :
     cyclicFvPatchField<Type>(ptf, iF),
     shearRate_(ptf.shearRate_),
+    jumps_(ptf.jumps_),
     mapTimeIndex_(-1)
 {}
 

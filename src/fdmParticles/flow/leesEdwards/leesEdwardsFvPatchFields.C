@@ -4,8 +4,8 @@
 
 Description
     The leesEdwards patch fields of scalars (the pressure, continuous
-    across the sheared faces) and vectors (the velocity, which jumps by
-    gammaDot L_y along x).
+    across the sheared faces), vectors (the velocity, which jumps by
+    gammaDot L_y along x) and tensors (the velocity gradient, continuous).
 
 \*---------------------------------------------------------------------------*/
 
@@ -18,6 +18,10 @@ Description
 template<>
 Foam::vector Foam::leesEdwardsFvPatchField<Foam::vector>::jump() const
 {
+    if (!jumps_)
+    {
+        return Zero;
+    }
     // The image one period up moves at +gammaDot L_y along x: seen from
     // the upper side the neighbour is faster, from the lower side slower
     const scalar du = shearRate_*patch().boundaryMesh().mesh().bounds()
@@ -30,9 +34,11 @@ namespace Foam
 {
     typedef leesEdwardsFvPatchField<scalar> leesEdwardsFvPatchScalarField;
     typedef leesEdwardsFvPatchField<vector> leesEdwardsFvPatchVectorField;
+    typedef leesEdwardsFvPatchField<tensor> leesEdwardsFvPatchTensorField;
 
     makeTemplatePatchTypeField(scalar, leesEdwards);
     makeTemplatePatchTypeField(vector, leesEdwards);
+    makeTemplatePatchTypeField(tensor, leesEdwards);
 }
 
 

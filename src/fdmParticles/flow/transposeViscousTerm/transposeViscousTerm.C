@@ -8,6 +8,7 @@
 #include "extrapolatedCalculatedFvPatchFields.H"
 #include "gaussGrad.H"
 #include "schemeEntries.H"
+#include "shareLeesEdwardsCoupling.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
 
@@ -46,6 +47,7 @@ Foam::tmp<Foam::volTensorField> gaussLinearGrad(const Foam::volVectorField& U)
         )
     );
     volTensorField& G = tGrad.ref();
+    fdm::shareLeesEdwardsCoupling(G, U);
     tensorField& g = G.primitiveFieldRef();
     const labelUList& own = mesh.owner();
     const labelUList& nei = mesh.neighbour();
@@ -176,7 +178,10 @@ Foam::tmp<Foam::volVectorField> Foam::fdm::transposeViscousTerm
     const fvMesh& mesh = U.mesh();
     if (!transposeViscousTermIsLinear(mesh))
     {
-        return fvc::div(nu*dev(T(fvc::grad(U))));
+        return fvc::div
+        (
+            fdm::shareLeesEdwardsCoupling(nu*dev(T(fvc::grad(U))), U)
+        );
     }
 
     tmp<volTensorField> tStress(gaussLinearGrad(U));
