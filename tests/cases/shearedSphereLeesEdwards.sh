@@ -3,11 +3,12 @@
 # torque-free (no walls to carry a push), in a Lees-Edwards box instead of
 # between walls: the y faces (y = -5, 5) coupled at shear rate 1, x and z
 # cyclic, solved at t = 0 (offset 0: the images across the faces move at
-# +-10 along x).  The same sphere at the box centre and moved up by 4.6
-# (23 cells), its support reaching across the sheared faces, at the same
-# position relative to the cells: its rotation, slip from the affine flow
-# and stresslet must not see the faces, and agree with free-sphere theory
-# as in shearedSphere (checkShearedSphereLeesEdwards.py).
+# +-10 along x) and after one step at t = 0.34 (offset 3.4, 17 cells).
+# The same sphere at the box centre and moved up by 4.6 (23 cells), its
+# support reaching across the sheared faces, at the same position relative
+# to the cells: its rotation, slip from the affine flow and stresslet must
+# not see the faces, and agree with free-sphere theory as in shearedSphere
+# (checkShearedSphereLeesEdwards.py).
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir shearedSphereLeesEdwards)
@@ -17,8 +18,9 @@ leesEdwardsBox "$work/centre" || exit 1
     cd "$work/centre" || exit 1
     foamDictionary -entry groups -set "{ pushed { } }" \
         constant/particleProperties > /dev/null
-    # The initial solve only
-    foamDictionary -entry endTime -set 0 system/controlDict > /dev/null
+    # The initial solve and one step: offsets 0 and 3.4
+    foamDictionary -entry deltaT -set 0.34 system/controlDict > /dev/null
+    foamDictionary -entry endTime -set 0.34 system/controlDict > /dev/null
 ) || exit 1
 # Moved up by 4.6, in the flow moved by -4.6 along x (the mean velocity of
 # a Lees-Edwards box is its initial one): the same flow around the sphere

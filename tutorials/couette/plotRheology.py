@@ -1,5 +1,7 @@
 #!/usr/bin/python3
-"""Couette suspension post-processing (thesis 1, sections 2.7 and 4.2):
+"""Couette suspension post-processing (thesis 1, sections 2.7 and 4.2), also
+of a Lees-Edwards box (tutorials/leesEdwards: --layer 0, the whole box at
+the imposed shear rate, no wall column in the consistency check):
 core viscosity (eq 2.76) with its error bar, normal stress differences and
 contact share (eq 4.13), per unit of strain and averaged with two error
 bars (block means; integrated autocorrelation), profiles phi(y) (eq 2.70) and u_p(y) (eq 6.4),
@@ -37,6 +39,7 @@ def main():
     case = args.case
 
     cs, gamma0 = couette_case(case, args.layer)
+    leesEdwards = cs.imposed_rate is not None
     L, eta = cs.span, cs.eta
     strain = cs.t * gamma0
     if strain[-1] <= args.start:
@@ -60,12 +63,14 @@ def main():
         m, e = r[key]
         return f"{m:{fmt}} +- {e:{fmt}}"
 
-    print(f"Couette suspension: {len(cs.a)} particles, box {L.tolist()},"
+    print(f"{'Lees-Edwards box' if leesEdwards else 'Couette suspension'}:"
+          f" {len(cs.a)} particles, box {L.tolist()},"
           f" strain {strain[-1]:.2f}, averages over strain >= {args.start}"
           f" ({r['records']} records, 5 blocks)")
     print(f"  core (|y - Ly/2| < {L[1] / 2 - args.layer:g}): phi_core"
           f" {pm('phiCore')}, gammaDot_core/gammaDot_0"
-          f" {r['gammaDotCore'][0] / gamma0:.3f}")
+          f" {r['gammaDotCore'][0] / gamma0:.3f}"
+          + (" (imposed: Lees-Edwards)" if leesEdwards else ""))
     print(f"  core viscosity eta_core (eq 2.76): {pm('etaCore')} (5 blocks);"
           f" +- {np.nanstd(etaInst) / np.sqrt(samples):.3f} from its"
           f" autocorrelation strain {tau:.2f} ({samples:.1f} independent"
@@ -90,6 +95,8 @@ def main():
                         "particle force balance rms(F^h + F^c)/rms(F^c)",
                         "particle torque balance rms(T^h + T^c)/rms(T^c)"),
                        balance):
+        if leesEdwards and name.startswith("wall"):
+            continue
         print(f"    {name}: {' '.join(f'{x:.2e}' for x in v)}")
 
     # Plots: profiles and time series

@@ -136,12 +136,15 @@ Foam::fdmParticleCloud::hdf5Description() const
     {
         groupNames[g] = groups_[g].name();
     }
+    // The imposed shear rate: the Lees-Edwards box's or the walls'
+    const scalar shearRate = box_.shearVelocity() != 0
+      ? box_.shearVelocity()/box_.span().y()
+      : planeWalls(mesh_, "HDF5 description", false).shearRate();
     particleHDF5Metadata::description d =
         particleHDF5Metadata::runDescription
         (
             "fdmSuspensionFoam (libfdmParticles)", mesh_.time().globalPath(),
-            groupNames, dict_, rhoFluid_*nu_,
-            planeWalls(mesh_, "HDF5 description", false).shearRate(),
+            groupNames, dict_, rhoFluid_*nu_, shearRate,
             mesh_.bounds(), box_.periodic()
         );
     d.numbers.insert

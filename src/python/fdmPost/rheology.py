@@ -42,7 +42,8 @@ class CouetteSeries:
     position, velocity, radius, stresslet, dipoleTrace, contactStresslet).
     """
 
-    def __init__(self, data, lo, span, eta, layer, normal=1, flow=0):
+    def __init__(self, data, lo, span, eta, layer, normal=1, flow=0,
+                 shear_rate=None):
         self.t = np.asarray(data["time"])
         self.x = np.asarray(data["position"])
         self.u = np.asarray(data["velocity"])
@@ -57,6 +58,9 @@ class CouetteSeries:
         self.layer = layer
         self.n = normal
         self.f = flow
+        # A Lees-Edwards box imposes its shear rate on the whole box (its
+        # mean velocity gradient); between walls the core's is measured
+        self.imposed_rate = shear_rate
         self.area = np.prod(self.span) / self.span[normal]
         self.core = (self.lo[normal] + layer,
                      self.lo[normal] + self.span[normal] - layer)
@@ -137,7 +141,10 @@ class CouetteSeries:
                                        - (self.core[1] - self.core[0])))
 
     def core_shear_rate(self, k):
-        """Slope of u_x against y of the particles centred in the core."""
+        """Slope of u_x against y of the particles centred in the core;
+        the imposed rate of a Lees-Edwards box."""
+        if self.imposed_rate is not None:
+            return self.imposed_rate
         c = self.in_core(k)
         if c.sum() < 2:
             return np.nan
@@ -344,9 +351,17 @@ def channel_case(case, layer):
     run = case_description(case)
     lo = np.asarray(run["boxMin"], float)
     L = np.asarray(run["boxMax"], float) - lo
-    cs = CouetteSeries.from_h5(path, lo=lo, span=L, eta=run["viscosity"],
-                               layer=layer)
+    cs = CouetteSeries.from_h5(
+        path, lo=lo, span=L, eta=run["viscosity"], layer=layer,
+        shear_rate=run["shearRate"] if lees_edwards(run) else None)
     return cs, L, run
+
+
+def lees_edwards(run):
+    """Whether a run description is of a Lees-Edwards box: periodic along
+    the gradient (y) and sheared."""
+    periodic = np.asarray(run.get("periodic", np.zeros(3)), float)
+    return bool(periodic[1]) and run["shearRate"] > 0
 
 
 def couette_case(case, layer):

@@ -232,6 +232,22 @@ class CaseDescription(unittest.TestCase):
                          (3.0, 0.5, "x"))
         self.assertEqual(cs.core, (-1.0, 5.0))
 
+    def test_lees_edwards_box_takes_its_imposed_rate(self):
+        # Periodic along y and sheared: the whole box (layer 0) at the
+        # imposed rate, not the particles' regression (one particle here,
+        # which has none); walls (periodic x z only): the regression
+        attrs = {"boxMin": [0.0, 0.0, 0.0], "boxMax": [4.0, 4.0, 4.0],
+                 "viscosity": 1.0, "shearRate": 0.5, "meshSpacing": 0.2}
+        with tempfile.TemporaryDirectory() as d:
+            self.write_case(d, {**attrs, "periodic": [1.0, 1.0, 1.0]})
+            cs, _, _ = channel_case(d, 0.0)
+        self.assertEqual(cs.core, (0.0, 4.0))
+        self.assertEqual(cs.core_shear_rate(0), 0.5)
+        with tempfile.TemporaryDirectory() as d:
+            self.write_case(d, {**attrs, "periodic": [1.0, 0.0, 1.0]})
+            cs, _, _ = channel_case(d, 0.0)
+        self.assertTrue(np.isnan(cs.core_shear_rate(0)))
+
     def test_from_dictionaries_without_attributes(self):
         with tempfile.TemporaryDirectory() as d:
             self.write_case(d, {})
