@@ -61,6 +61,7 @@ class CouetteSeries:
         # A Lees-Edwards box imposes its shear rate on the whole box (its
         # mean velocity gradient); between walls the core's is measured
         self.imposed_rate = shear_rate
+        self.lees_edwards = shear_rate is not None
         self.area = np.prod(self.span) / self.span[normal]
         self.core = (self.lo[normal] + layer,
                      self.lo[normal] + self.span[normal] - layer)
@@ -76,6 +77,23 @@ class CouetteSeries:
             data = {k: f[k][...] for k in f.keys()}
         return CouetteSeries(data, **geometry)
 
+    def images(self, yc):
+        """(centres, velocity shift) of the particles and, in a Lees-Edwards
+        box, of their images one period down and up, which move at -+
+        gammaDot L_y along the flow: for sums over planes that a sphere
+        across the sheared faces crosses."""
+        if not self.lees_edwards:
+            return [(yc, 0.0)]
+        L = self.span[self.n]
+        du = self.imposed_rate * L
+        return [(yc, 0.0), (yc - L, -du), (yc + L, du)]
+
+    def slab(self, yc, lo, hi):
+        """Particle volume between the planes y = lo, hi (slab_volume);
+        in a Lees-Edwards box with the images, so that a sphere across the
+        sheared faces counts whole."""
+        return sum(slab_volume(y, self.a, lo, hi) for y, _ in self.images(yc))
+
     # Profiles ----------------------------------------------------------
 
     def profiles(self, bins, steps):
@@ -86,11 +104,11 @@ class CouetteSeries:
         vol = np.zeros(bins)
         mom = np.zeros(bins)
         for k in steps:
-            yc = self.x[k, :, self.n]
-            for b in range(bins):
-                v = slab_volume(yc, self.a, edges[b], edges[b + 1])
-                vol[b] += v.sum()
-                mom[b] += (v * self.u[k, :, self.f]).sum()
+            for y, du in self.images(self.x[k, :, self.n]):
+                for b in range(bins):
+                    v = slab_volume(y, self.a, edges[b], edges[b + 1])
+                    vol[b] += v.sum()
+                    mom[b] += (v * (self.u[k, :, self.f] + du)).sum()
         dy = np.diff(edges)
         phi = vol / (len(steps) * self.area * dy)
         up = np.where(vol > 0, mom / np.maximum(vol, 1e-300), np.nan)
@@ -112,8 +130,8 @@ class CouetteSeries:
                 + (self.s[k] / 3.0)[:, None, None] * np.eye(3)
             Sc = symm6_to_tensor(self.Sc[k])
             for b in range(bins):
-                w = slab_volume(self.x[k, :, self.n], self.a, edges[b],
-                                edges[b + 1]) / volume
+                w = self.slab(self.x[k, :, self.n], edges[b],
+                              edges[b + 1]) / volume
                 hp[b] += np.einsum("p,pij->ij", w, SH)
                 c[b] += np.einsum("p,pij->ij", w, Sc)
         scale = 1.0 / (len(steps) * self.area * dy)[:, None, None]
@@ -127,7 +145,7 @@ class CouetteSeries:
 
     def core_volume_fraction(self, k):
         """Eq 2.71: particle volume between the core planes."""
-        v = slab_volume(self.x[k, :, self.n], self.a, *self.core)
+        v = self.slab(self.x[k, :, self.n], *self.core)
         return v.sum() / (self.area * (self.core[1] - self.core[0]))
 
     def wall_volume_fraction(self, k):

@@ -243,6 +243,17 @@ class CaseDescription(unittest.TestCase):
             cs, _, _ = channel_case(d, 0.0)
         self.assertEqual(cs.core, (0.0, 4.0))
         self.assertEqual(cs.core_shear_rate(0), 0.5)
+        # The unit sphere at y = 2 moved across the face y = 4: whole
+        cs.x[0, 0, 1] = 3.5
+        self.assertAlmostEqual(cs.core_volume_fraction(0),
+                               4 / 3 * np.pi / 64, 14)
+        # The part across the face is its image one period down, slower by
+        # gammaDot L_y = 2: the bottom bin's particle velocity
+        cs.u[0, 0, 0] = 0.75
+        yb, phi, up = cs.profiles(4, [0])
+        self.assertAlmostEqual(phi.sum() / 4, 4 / 3 * np.pi / 64, 14)
+        self.assertAlmostEqual(up[3], 0.75, 14)
+        self.assertAlmostEqual(up[0], -1.25, 14)
         with tempfile.TemporaryDirectory() as d:
             self.write_case(d, {**attrs, "periodic": [1.0, 0.0, 1.0]})
             cs, _, _ = channel_case(d, 0.0)
