@@ -110,13 +110,19 @@ void Foam::fdmOuterLoopControl::diverged(const string& what) const
         << ": " << what.c_str() << "." << nl
         << "    Nothing of this step is written; the last written time is"
         << " the last good state." << nl
+        // The file by its path: on the other ranks the dictionary came
+        // through a stream and is named after it
         << "    Lower the U relaxation factor in "
-        << mesh_.solutionDict().name() << " (now "
-        << (relaxed ? mesh_.equationRelaxationFactor("U") : 1)
-        << ", thesis 0.9), set acceleration anderson in its "
-        << algorithmName_ << " block (now "
-        << (accelerationDepth_ > 0 ? "anderson" : "none")
-        << "), or lower deltaT." << exit(FatalError);
+        << mesh_.time().globalPath()/mesh_.time().system()/"fvSolution"
+        << " (now " << (relaxed ? mesh_.equationRelaxationFactor("U") : 1)
+        << ", thesis 0.9)"
+        << (
+               accelerationDepth_ > 0 ? ""
+             : ", set acceleration anderson in its " + algorithmName_
+             + " block (now none)"
+           )
+        << ", or lower deltaT (now " << mesh_.time().deltaTValue()
+        << ")." << exit(FatalError);
 }
 
 
