@@ -8,6 +8,7 @@
 #include "mathematicalConstants.H"
 #include "error.H"
 
+#include <cmath>
 #include <limits>
 
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
@@ -29,7 +30,8 @@ Foam::fdm::channelAverages::channelAverages
     const vector& span,
     direction normal,
     direction flow,
-    label nBins
+    label nBins,
+    scalar leesEdwardsRate
 )
 :
     normal_(normal),
@@ -37,7 +39,8 @@ Foam::fdm::channelAverages::channelAverages
     lo_(lo[normal]),
     height_(span[normal]),
     area_(cmptProduct(span)/span[normal]),
-    nBins_(nBins)
+    nBins_(nBins),
+    leesEdwardsRate_(leesEdwardsRate)
 {
     if (normal > 2 || flow > 2 || normal == flow || nBins < 1)
     {
@@ -46,6 +49,25 @@ Foam::fdm::channelAverages::channelAverages
             << "least one bin; got normal " << label(normal) << ", flow "
             << label(flow) << ", " << nBins << " bins" << exit(FatalError);
     }
+}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::List<Foam::Pair<Foam::scalar>>
+Foam::fdm::channelAverages::images(const scalar c) const
+{
+    if (leesEdwardsRate_ == 0)
+    {
+        return {Pair<scalar>(c, 0)};
+    }
+    const scalar du = leesEdwardsRate_*height_;
+    return
+    {
+        Pair<scalar>(c, 0),
+        Pair<scalar>(c - height_, -du),
+        Pair<scalar>(c + height_, du)
+    };
 }
 
 
@@ -66,22 +88,28 @@ Foam::fdm::channelAverages::binned(const particleSample& s) const
     forAll(s.position, i)
     {
         const scalar a = s.radius[i];
-        const scalar c = s.position[i][normal_];
         const scalar Vp = 4.0/3.0*constant::mathematical::pi*a*a*a;
-        // Only the bins the sphere reaches
-        const label b0 = max(label((c - a - lo_)/dy), 0);
-        const label b1 = min(label((c + a - lo_)/dy), nBins_ - 1);
-        for (label b = b0; b <= b1; ++b)
+        for (const Pair<scalar>& image : images(s.position[i][normal_]))
         {
-            const scalar v =
-                slabVolume(c, a, lo_ + b*dy, lo_ + (b + 1)*dy);
-            p.volumeFraction[b] += v;
-            p.velocity[b] += v*s.velocity[i];
-            // Stresslet spread uniformly over the sphere (eq 2.75)
-            p.hydrodynamic[b] += (v/Vp)*s.hydrodynamic[i];
-            if (hasContact)
+            const scalar c = image.first();
+            vector u = s.velocity[i];
+            u[flow_] += image.second();
+            // Only the bins the sphere reaches
+            const label b0 = max(label(std::floor((c - a - lo_)/dy)), 0);
+            const label b1 =
+                min(label(std::floor((c + a - lo_)/dy)), nBins_ - 1);
+            for (label b = b0; b <= b1; ++b)
             {
-                p.contact[b] += (v/Vp)*s.contact[i];
+                const scalar v =
+                    slabVolume(c, a, lo_ + b*dy, lo_ + (b + 1)*dy);
+                p.volumeFraction[b] += v;
+                p.velocity[b] += v*u;
+                // Stresslet spread uniformly over the sphere (eq 2.75)
+                p.hydrodynamic[b] += (v/Vp)*s.hydrodynamic[i];
+                if (hasContact)
+                {
+                    p.contact[b] += (v/Vp)*s.contact[i];
+                }
             }
         }
     }
@@ -125,7 +153,10 @@ Foam::fdm::channelAverages::averages
     forAll(s.position, i)
     {
         const scalar y = s.position[i][normal_];
-        r.volumeFraction += slabVolume(y, s.radius[i], lo, hi);
+        for (const Pair<scalar>& image : images(y))
+        {
+            r.volumeFraction += slabVolume(image.first(), s.radius[i], lo, hi);
+        }
         if (y > lo && y < hi)
         {
             ++r.nParticles;
@@ -147,6 +178,12 @@ Foam::fdm::channelAverages::averages
     r.hydrodynamic /= V;
     r.contact /= V;
 
+    if (leesEdwardsRate_ != 0)
+    {
+        // The mean velocity gradient of a Lees-Edwards cell is imposed
+        r.shearRate = leesEdwardsRate_;
+        return r;
+    }
     // Least-squares slope of u(y); undefined below two particles
     const label n = r.nParticles;
     const scalar varY = syy - sy*sy/max(n, 1);

@@ -140,6 +140,46 @@ TEST(channelAverages, singleSphereProfileIsItsSlabVolumes)
 }
 
 
+TEST(channelAverages, leesEdwardsCellCountsTheImagesAcrossTheFaces)
+{
+    // The sphere of the test above moved to y = 4.5, across the sheared
+    // face y = 5 of a Lees-Edwards cell at rate 0.4 (image velocity -+2
+    // along x): bins [3,4] and [4,5] hold a cap of height 0.5 and the
+    // middle slab, bin [0,1] the other cap as its image one period down,
+    // slower by 2; the whole cell's volume fraction is the whole sphere's
+    // and its shear rate the imposed one.  Between walls the cap across
+    // is lost.
+    fdm::particleSample s;
+    s.position = List<point>(1, point(1, 4.5, 1));
+    s.velocity = List<vector>(1, vector(2, 0, 0));
+    s.radius = scalarField(1, 1.0);
+    s.hydrodynamic = List<symmTensor>(1, symmTensor(0, 3, 0, 0, 0, 0));
+    const scalar area = 6;
+    const scalar cap = capVolume(1, 0.5);
+    const fdm::channelAverages sheared
+    (
+        point(0, 0, 0), vector(2, 5, 3), 1, 0, 5, 0.4
+    );
+    const auto p = sheared.binned(s);
+    EXPECT_NEAR(p.volumeFraction[3]*area, cap, 1e-13);
+    EXPECT_NEAR(p.volumeFraction[4]*area, sphereVolume(1) - 2*cap, 1e-13);
+    EXPECT_NEAR(p.volumeFraction[0]*area, cap, 1e-13);
+    EXPECT_NEAR(p.velocity[4].x(), 2, 1e-14);
+    EXPECT_NEAR(p.velocity[0].x(), 0, 1e-14);
+    EXPECT_NEAR(p.hydrodynamic[0].xy()*area, 3*cap/sphereVolume(1), 1e-13);
+    const auto r = sheared.averages(s, 0);
+    EXPECT_NEAR(r.volumeFraction*area*5, sphereVolume(1), 1e-13);
+    EXPECT_EQ(r.shearRate, 0.4);
+
+    const fdm::channelAverages walls(point(0, 0, 0), vector(2, 5, 3), 1, 0, 5);
+    EXPECT_NEAR
+    (
+        walls.averages(s, 0).volumeFraction*area*5, sphereVolume(1) - cap,
+        1e-13
+    );
+}
+
+
 TEST(channelAverages, regionAveragesAndShearRegression)
 {
     const scalar L = 12, gammaDot = 0.37, layer = 2.5;

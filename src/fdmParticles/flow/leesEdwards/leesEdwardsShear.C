@@ -7,6 +7,31 @@
 #include "leesEdwardsFvPatchField.H"
 #include "volFields.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- U's leesEdwards patch field on this rank, or nullptr
+const Foam::leesEdwardsFvPatchField<Foam::vector>* shearedPatch
+(
+    const Foam::volVectorField& U
+)
+{
+    for (const Foam::fvPatchVectorField& pf : U.boundaryField())
+    {
+        if (Foam::isA<Foam::leesEdwardsFvPatchField<Foam::vector>>(pf))
+        {
+            return &Foam::refCast
+                <const Foam::leesEdwardsFvPatchField<Foam::vector>>(pf);
+        }
+    }
+    return nullptr;
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
 bool Foam::fdm::setLeesEdwardsShear(const fvMesh& mesh, periodicBox& box)
@@ -15,16 +40,12 @@ bool Foam::fdm::setLeesEdwardsShear(const fvMesh& mesh, periodicBox& box)
     scalar rate = -GREAT, offset = -GREAT;
     if (mesh.foundObject<volVectorField>("U"))
     {
-        const volVectorField& U = mesh.lookupObject<volVectorField>("U");
-        for (const fvPatchVectorField& pf : U.boundaryField())
+        const auto* le =
+            shearedPatch(mesh.lookupObject<volVectorField>("U"));
+        if (le)
         {
-            if (isA<leesEdwardsFvPatchField<vector>>(pf))
-            {
-                const auto& le =
-                    refCast<const leesEdwardsFvPatchField<vector>>(pf);
-                rate = le.shearRate();
-                offset = le.offset();
-            }
+            rate = le->shearRate();
+            offset = le->offset();
         }
     }
     reduce(rate, maxOp<scalar>());
@@ -36,6 +57,35 @@ bool Foam::fdm::setLeesEdwardsShear(const fvMesh& mesh, periodicBox& box)
     box.setShearVelocity(rate*box.span().y());
     box.setShearOffset(offset);
     return true;
+}
+
+
+Foam::scalar Foam::fdm::leesEdwardsShearRate(const fvMesh& mesh)
+{
+    const auto rateOf = [](const volVectorField& U)
+    {
+        const auto* le = shearedPatch(U);
+        return le ? le->shearRate() : 0;
+    };
+    scalar rate = 0;
+    if (mesh.foundObject<volVectorField>("U"))
+    {
+        rate = rateOf(mesh.lookupObject<volVectorField>("U"));
+    }
+    else
+    {
+        const IOobject io
+        (
+            "U",
+            mesh.time().findInstance(mesh.dbDir(), "U"),
+            mesh,
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        );
+        rate = rateOf(volVectorField(io, mesh));
+    }
+    return returnReduce(rate, maxOp<scalar>());
 }
 
 

@@ -14,6 +14,7 @@
 #include "Time.H"
 #include "fvMesh.H"
 #include "readBounded.H"
+#include "leesEdwardsShear.H"
 
 namespace Foam
 {
@@ -231,9 +232,23 @@ bool Foam::functionObjects::suspensionStress::read(const dictionary& dict)
             << "0 <= wallLayer < half the channel height "
             << bb.span()[normal_]/2 << exit(FatalIOError);
     }
+    // A Lees-Edwards box: the images across its sheared faces (gradient
+    // y, flow x) and its imposed shear rate
+    const scalar leesEdwardsRate = fdm::leesEdwardsShearRate(mesh_);
+    if (leesEdwardsRate != 0 && (normal_ != vector::Y || flow_ != vector::X))
+    {
+        FatalIOErrorInFunction(dict)
+            << "keywords normal and flow are " << "xyz"[normal_] << " and "
+            << "xyz"[flow_] << "; a Lees-Edwards box (0/U) is sheared along"
+            << " x with its gradient along y: allowed normal y, flow x"
+            << exit(FatalIOError);
+    }
     averages_.reset
     (
-        new fdm::channelAverages(bb.min(), bb.span(), normal_, flow_, bins_)
+        new fdm::channelAverages
+        (
+            bb.min(), bb.span(), normal_, flow_, bins_, leesEdwardsRate
+        )
     );
 
     const IOdictionary transport
