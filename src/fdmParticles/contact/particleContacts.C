@@ -155,6 +155,9 @@ void Foam::particleContacts::update
     }
     nPairs_ = nWalls_ = nBelowFloor_ = 0;
     minGap_ = GREAT;
+    // The contact of the smallest gap, for the messages
+    key closest(-1, -1);
+    bool closestAcrossShear = false;
 
     forEachContact
     (
@@ -188,7 +191,12 @@ void Foam::particleContacts::update
             );
             ++(wall < 0 ? nPairs_ : nWalls_);
             nBelowFloor_ += g.gap < g.floorGap;
-            minGap_ = min(minGap_, g.gap);
+            if (g.gap < minGap_)
+            {
+                minGap_ = g.gap;
+                closest = k;
+                closestAcrossShear = wall < 0 && magSqr(imageU) > 0;
+            }
         }
     );
     List<scalar> startGaps(contacts_.size());
@@ -198,11 +206,27 @@ void Foam::particleContacts::update
     }
     linearise(startGaps);
 
+    const auto between = [&]()
+    {
+        OStringStream os;
+        os  << "particle " << closest.first() << " and ";
+        if (closest.second() >= 0)
+        {
+            os  << "particle " << closest.second();
+        }
+        else
+        {
+            os  << "wall " << -1 - closest.second();
+        }
+        os  << (closestAcrossShear ? " (across the sheared faces)" : "");
+        return os.str();
+    };
     if (nContacts() && minGap_ < -law_->roughness())
     {
         FatalErrorInFunction
             << "Runaway overlap at time " << mesh_.time().timeName()
-            << ": surfaces overlap by " << -minGap_ << ", more than the"
+            << ": surfaces of " << between().c_str() << " overlap by "
+            << -minGap_ << ", more than the"
             << " asperity height h_r = " << law_->roughness() << nl
             << "    The contact barrier (eq 2.57) was crossed within one"
             << " time step.  Reduce deltaT in system/controlDict, or"
@@ -215,7 +239,8 @@ void Foam::particleContacts::update
         WarningInFunction
             << nBelowFloor_ << " contact gap(s) below the barrier floor"
             << " (gapFloor) at time " << mesh_.time().timeName()
-            << ", smallest gap " << minGap_ << ": their force is evaluated"
+            << ", smallest gap " << minGap_ << " (" << between().c_str()
+            << "): their force is evaluated"
             << " at the floor.  Reduce deltaT if this repeats." << endl;
     }
 }
