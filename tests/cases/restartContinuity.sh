@@ -60,16 +60,7 @@ cp -r "$work/straight" "$work/continued"
     mv log.fdmSuspensionFoam straight/
 ) || exit 1
 (
-    cd "$work/restarted" || exit 1
-    foamDictionary -entry writeInterval -set 2 system/controlDict > /dev/null
-    foamDictionary -entry endTime -set 0.15 system/controlDict > /dev/null
-    runLogged fdmSuspensionFoam || exit 1
-    [ -f 0.15/particleState ] || { echo "FAIL: the last step, 0.15, not written"; exit 1; }
-    foamDictionary -entry endTime -set 0.2 system/controlDict > /dev/null
-    foamDictionary -entry startFrom -set latestTime system/controlDict \
-        > /dev/null
-    mv log.fdmSuspensionFoam log.first
-    runLogged fdmSuspensionFoam
+    cd "$work/restarted" && runStoppedAndRestarted 0.15 0.2
 ) || exit 1
 
 # On another machine: the first segment to 0.1 leaves a particle

@@ -40,15 +40,7 @@ leesEdwardsBox "$work/straight" || exit 1
 cp -r "$work/straight" "$work/restarted"
 (cd "$work/straight" && runLogged fdmSuspensionFoam) || exit 1
 (
-    cd "$work/restarted" || exit 1
-    foamDictionary -entry writeInterval -set 2 system/controlDict > /dev/null
-    foamDictionary -entry endTime -set 0.15 system/controlDict > /dev/null
-    runLogged fdmSuspensionFoam || exit 1
-    foamDictionary -entry endTime -set 0.2 system/controlDict > /dev/null
-    foamDictionary -entry startFrom -set latestTime system/controlDict \
-        > /dev/null
-    mv log.fdmSuspensionFoam log.first
-    runLogged fdmSuspensionFoam
+    cd "$work/restarted" && runStoppedAndRestarted 0.15 0.2
 ) || exit 1
 
 "$FDM_PYTHON" - "$work" <<'CHECK'

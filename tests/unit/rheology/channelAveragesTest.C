@@ -34,6 +34,18 @@ scalar capVolume(scalar a, scalar h)
     return pi*h*h*(3*a - h)/3;
 }
 
+// One sphere of radius 1 at (1, y, 1), velocity (2, 0, 0), stresslet
+// S_xy = 3, no contacts
+fdm::particleSample oneSphere(scalar y)
+{
+    fdm::particleSample s;
+    s.position = List<point>(1, point(1, y, 1));
+    s.velocity = List<vector>(1, vector(2, 0, 0));
+    s.radius = scalarField(1, 1.0);
+    s.hydrodynamic = List<symmTensor>(1, symmTensor(0, 3, 0, 0, 0, 0));
+    return s;
+}
+
 // Random bidisperse spheres inside [0, L]^3 (walls at y = 0, L), with
 // random velocities and stresslets
 fdm::particleSample randomSample(label n, scalar L, unsigned seed)
@@ -119,11 +131,7 @@ TEST(channelAverages, singleSphereProfileIsItsSlabVolumes)
     // One sphere of radius 1 centred at y = 2.5 in bins of width 1: the
     // bins [1,2], [2,3], [3,4] hold a cap of height 0.5, the middle slab
     // and another cap
-    fdm::particleSample s;
-    s.position = List<point>(1, point(1, 2.5, 1));
-    s.velocity = List<vector>(1, vector(2, 0, 0));
-    s.radius = scalarField(1, 1.0);
-    s.hydrodynamic = List<symmTensor>(1, symmTensor(0, 3, 0, 0, 0, 0));
+    const fdm::particleSample s = oneSphere(2.5);
     const fdm::channelAverages avg(point(0, 0, 0), vector(2, 5, 3), 1, 0, 5);
     const auto p = avg.binned(s);
     const scalar area = 6;
@@ -149,11 +157,7 @@ TEST(channelAverages, leesEdwardsCellCountsTheImagesAcrossTheFaces)
     // slower by 2; the whole cell's volume fraction is the whole sphere's
     // and its shear rate the imposed one.  Between walls the cap across
     // is lost.
-    fdm::particleSample s;
-    s.position = List<point>(1, point(1, 4.5, 1));
-    s.velocity = List<vector>(1, vector(2, 0, 0));
-    s.radius = scalarField(1, 1.0);
-    s.hydrodynamic = List<symmTensor>(1, symmTensor(0, 3, 0, 0, 0, 0));
+    const fdm::particleSample s = oneSphere(4.5);
     const scalar area = 6;
     const scalar cap = capVolume(1, 0.5);
     const fdm::channelAverages sheared
