@@ -206,43 +206,7 @@ void Foam::particleContacts::update
     }
     linearise(startGaps);
 
-    const auto between = [&]()
-    {
-        OStringStream os;
-        os  << "particle " << closest.first() << " and ";
-        if (closest.second() >= 0)
-        {
-            os  << "particle " << closest.second();
-        }
-        else
-        {
-            os  << "wall " << -1 - closest.second();
-        }
-        os  << (closestAcrossShear ? " (across the sheared faces)" : "");
-        return os.str();
-    };
-    if (nContacts() && minGap_ < -law_->roughness())
-    {
-        FatalErrorInFunction
-            << "Runaway overlap at time " << mesh_.time().timeName()
-            << ": surfaces of " << between().c_str() << " overlap by "
-            << -minGap_ << ", more than the"
-            << " asperity height h_r = " << law_->roughness() << nl
-            << "    The contact barrier (eq 2.57) was crossed within one"
-            << " time step.  Reduce deltaT in system/controlDict, or"
-            << " soften the contacts (larger meanDeformation or smaller kn"
-            << " in constant/particleProperties contact).  The last written"
-            << " time is the last good state." << exit(FatalError);
-    }
-    if (nBelowFloor_)
-    {
-        WarningInFunction
-            << nBelowFloor_ << " contact gap(s) below the barrier floor"
-            << " (gapFloor) at time " << mesh_.time().timeName()
-            << ", smallest gap " << minGap_ << " (" << between().c_str()
-            << "): their force is evaluated"
-            << " at the floor.  Reduce deltaT if this repeats." << endl;
-    }
+    checkGaps(closest, closestAcrossShear);
 }
 
 
@@ -342,75 +306,6 @@ Foam::fdm::contactNetwork Foam::particleContacts::network
         );
     }
     return links;
-}
-
-
-void Foam::particleContacts::report() const
-{
-    Info<< "Contacts: " << nPairs_ << " pairs, " << nWalls_ << " with walls, "
-        << nSliding_ << " sliding";
-    if (nContacts())
-    {
-        Info<< ", smallest gap " << minGap_;
-    }
-    Info<< endl;
-}
-
-
-void Foam::particleContacts::writeSlip(Ostream& os) const
-{
-    os.writeEntry("contactPairs", slip_.pairs());
-    os.writeEntry("contactSlip", slip_.states());
-}
-
-
-void Foam::particleContacts::readSlip(const dictionary& state)
-{
-    slip_.clear();
-    if (!state.found("contactPairs"))
-    {
-        return;
-    }
-    const List<labelPair> keys(state.get<List<labelPair>>("contactPairs"));
-    const List<vector> slips(state.get<List<vector>>("contactSlip"));
-    if (keys.size() != slips.size())
-    {
-        FatalIOErrorInFunction(state)
-            << "contactPairs and contactSlip in " << state.name()
-            << " differ in length" << exit(FatalIOError);
-    }
-    if (!slip_.reset(keys, slips))
-    {
-        FatalIOErrorInFunction(state)
-            << "contactPairs in " << state.name() << " lists a pair twice"
-            << exit(FatalIOError);
-    }
-}
-
-
-void Foam::particleContacts::writeState
-(
-    Ostream& os,
-    const fdm::particleLoads& loads
-) const
-{
-    os.writeEntry("contactForce", loads.force);
-    os.writeEntry("contactTorque", loads.torque);
-    os.writeEntry("contactStresslet", loads.stresslet);
-    writeSlip(os);
-}
-
-
-void Foam::particleContacts::readState
-(
-    const dictionary& state,
-    fdm::particleLoads& loads
-)
-{
-    readSlip(state);
-    loads.force = state.get<List<vector>>("contactForce");
-    loads.torque = state.get<List<vector>>("contactTorque");
-    loads.stresslet = state.get<List<symmTensor>>("contactStresslet");
 }
 
 

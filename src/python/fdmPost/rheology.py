@@ -4,9 +4,8 @@ u_p(y) (eq 6.4), core volume fraction (eq 2.71), core shear rate, particle
 stresses Sigma^hp and Sigma^c (eqs 2.73-2.74) and the core viscosity
 (eq 2.76), with time averages and their error bars.
 
-Geometry: plane Couette cell, walls normal to axis `normal` (y), flow along
-x, vorticity along z.  Stresses in the units of the run (Pa when the
-stresslets are in N m and lengths in m).
+Geometry: a plane Couette cell (walls normal to `normal`, y) or a
+Lees-Edwards box; flow along x, vorticity along z; stresses in run units.
 """
 
 import os
@@ -58,8 +57,7 @@ class CouetteSeries:
         self.layer = layer
         self.n = normal
         self.f = flow
-        # A Lees-Edwards box imposes its shear rate on the whole box (its
-        # mean velocity gradient); between walls the core's is measured
+        # A Lees-Edwards box imposes its mean velocity gradient
         self.imposed_rate = shear_rate
         self.lees_edwards = shear_rate is not None
         self.area = np.prod(self.span) / self.span[normal]
@@ -78,20 +76,16 @@ class CouetteSeries:
         return CouetteSeries(data, **geometry)
 
     def images(self, yc):
-        """(centres, velocity shift) of the particles and, in a Lees-Edwards
-        box, of their images one period down and up, which move at -+
-        gammaDot L_y along the flow: for sums over planes that a sphere
-        across the sheared faces crosses."""
-        if not self.lees_edwards:
-            return [(yc, 0.0)]
+        """(centres, flow velocity shift) of the particles and, in a
+        Lees-Edwards box, of their images one period down and up (-+
+        gammaDot L_y): a sphere across the sheared faces counts whole."""
         L = self.span[self.n]
-        du = self.imposed_rate * L
-        return [(yc, 0.0), (yc - L, -du), (yc + L, du)]
+        du = (self.imposed_rate or 0.0) * L
+        shifts = (0, -1, 1) if self.lees_edwards else (0,)
+        return [(yc + k * L, k * du) for k in shifts]
 
     def slab(self, yc, lo, hi):
-        """Particle volume between the planes y = lo, hi (slab_volume);
-        in a Lees-Edwards box with the images, so that a sphere across the
-        sheared faces counts whole."""
+        """Particle volume between the planes y = lo, hi, images included."""
         return sum(slab_volume(y, self.a, lo, hi) for y, _ in self.images(yc))
 
     # Profiles ----------------------------------------------------------
@@ -159,9 +153,8 @@ class CouetteSeries:
                                        - (self.core[1] - self.core[0])))
 
     def core_shear_rate(self, k):
-        """Slope of u_x against y of the particles centred in the core;
-        the imposed rate of a Lees-Edwards box."""
-        if self.imposed_rate is not None:
+        """Slope of u_x(y) of the core's particles (or the imposed rate)."""
+        if self.lees_edwards:
             return self.imposed_rate
         c = self.in_core(k)
         if c.sum() < 2:
@@ -376,10 +369,8 @@ def channel_case(case, layer):
 
 
 def lees_edwards(run):
-    """Whether a run description is of a Lees-Edwards box: periodic along
-    the gradient (y) and sheared."""
-    periodic = np.asarray(run.get("periodic", np.zeros(3)), float)
-    return bool(periodic[1]) and run["shearRate"] > 0
+    """Whether a run is in a Lees-Edwards box (periodic along y, sheared)."""
+    return bool(run.get("periodic", np.zeros(3))[1]) and run["shearRate"] > 0
 
 
 def couette_case(case, layer):
