@@ -144,13 +144,12 @@ class CouetteSeries:
 
     def wall_volume_fraction(self, k):
         """Particle volume in the two wall layers over their volume (the
-        wall depletion of chapter 5)."""
+        wall depletion of chapter 5); NaN without layers."""
         lo, hi = self.lo[self.n], self.lo[self.n] + self.span[self.n]
-        y = self.x[k, :, self.n]
+        y, layers = self.x[k, :, self.n], 2 * self.layer * self.area
         v = slab_volume(y, self.a, lo, self.core[0]) \
             + slab_volume(y, self.a, self.core[1], hi)
-        return v.sum() / (self.area * (self.span[self.n]
-                                       - (self.core[1] - self.core[0])))
+        return v.sum() / layers if layers > 0 else np.nan
 
     def core_shear_rate(self, k):
         """Slope of u_x(y) of the core's particles (or the imposed rate)."""
