@@ -74,16 +74,22 @@ Foam::scalar Foam::fdm::leesEdwardsShearRate(const fvMesh& mesh)
     }
     else
     {
-        const IOobject io
+        IOobject io
         (
             "U",
-            mesh.time().findInstance(mesh.dbDir(), "U"),
+            mesh.time().findInstance
+            (
+                mesh.dbDir(), "U", IOobject::READ_IF_PRESENT
+            ),
             mesh,
             IOobject::MUST_READ,
             IOobject::NO_WRITE,
             false
         );
-        rate = rateOf(volVectorField(io, mesh));
+        if (io.typeHeaderOk<volVectorField>(true))
+        {
+            rate = rateOf(volVectorField(io, mesh));
+        }
     }
     return returnReduce(rate, maxOp<scalar>());
 }
