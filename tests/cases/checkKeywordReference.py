@@ -58,7 +58,7 @@ OPTION_PY = re.compile(
 # particleState of both solvers and the resistance tables
 INTERNAL = {
     ("src/fdmParticles/cloud/fdmParticleCloudInput.C", "state"),
-    ("src/fdmParticles/contact/particleContacts.C", "state"),
+    ("src/fdmParticles/contact/particleContactsIO.C", "state"),
     ("src/fdmParticles/functionObjects/suspensionStress/suspensionStress.C",
      "state"),
     ("src/fdmParticles/dem/lubricatedDEM/lubricatedDEMState.C", "dict"),
