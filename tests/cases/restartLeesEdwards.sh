@@ -30,7 +30,7 @@ leesEdwardsBox "$work/straight" || exit 1
     foamDictionary -entry particles -set \
         '((up (1.55 2.84 1.47) 1) (down (4.45 -2.86 4.51) 1))' \
         constant/particleProperties > /dev/null
-    foamDictionary -entry coupling.lambdaTolerance -set 1e-5 \
+    foamDictionary -entry coupling.lambdaTolerance -set 1e-4 \
         constant/particleProperties > /dev/null
     foamDictionary -entry deltaT -set 0.05 system/controlDict > /dev/null
     foamDictionary -entry endTime -set 0.2 system/controlDict > /dev/null
