@@ -155,13 +155,17 @@ void Foam::fdmParticleCloud::readParticles()
             dict_, mesh_.time().globalPath()/mesh_.time().constant()
         );
 
+    // The list is the state of time 0: a Lees-Edwards box's images at
+    // offset 0 (a restart has moved them on; its particleState follows)
+    fdm::periodicBox listBox(box_);
+    listBox.setShearOffset(0);
     state_.group.setSize(list.group.size());
     forAll(list.group, i)
     {
         state_.group[i] = groupIndex(list.group[i], dict_);
-        list.position[i] = box_.wrap(list.position[i]);
+        list.position[i] = listBox.wrap(list.position[i]);
     }
-    fdm::checkParticleList(list.position, list.radius, box_, list.source);
+    fdm::checkParticleList(list.position, list.radius, listBox, list.source);
     state_.radius.transfer(list.radius);
     state_.position.transfer(list.position);
 }
