@@ -158,7 +158,10 @@ void Foam::fdmParticleCloud::readParticles()
     // The list is the state of time 0: a Lees-Edwards box's images at
     // offset 0 (a restart has moved them on; its particleState follows)
     fdm::periodicBox listBox(box_);
-    listBox.setShearOffset(0);
+    if (box_.shearOffset() != 0)
+    {
+        listBox.setShearOffset(0);
+    }
     state_.group.setSize(list.group.size());
     forAll(list.group, i)
     {
