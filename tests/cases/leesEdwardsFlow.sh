@@ -5,7 +5,7 @@
 # offset 0.18 is 2.88 cells, not a whole number.  The uniform shear
 # u_x = y - 1/2 is exact (tolerance 1e-10, the linear solvers at 1e-14),
 # with PCG and with GAMG, and after 400 box passes (t = 100.93).
-# A split along y (across the sheared faces) stops with what to change.
+# On 2 ranks split along y (across the sheared faces) too, restarted.
 # Particles in the sheared box: shearedSphereLeesEdwards.
 source "${0%/*}/caseTestFunctions"
 
@@ -67,20 +67,26 @@ mkdir -p "$work/passes" && cp -r "$work"/{0,constant,system} "$work/passes"/
         uniformShearExact 100.93 "after 400 box passes"
 ) || exit 1
 
-# Split along y: refused before anything runs
+# Split along y (across the sheared faces: their processorCyclic parts
+# sheared by leesEdwardsProcessorCyclic): the same exact shear, and the
+# fields written with that type restart as they ran
 (
     cd "$work/parallel" || exit 1
     rm -rf processor*
     foamDictionary -entry coeffs.n -set "(1 2 1)" system/decomposeParDict \
         > /dev/null
     runLogged decomposePar || exit 1
-    if mpirun -np 2 --oversubscribe fdmSuspensionFoam -parallel \
-        > log.ySplit 2>&1
-    then
-        echo "FAILED: a split along y ran"; exit 1
-    fi
-    grep -qF "decompose along z only" log.ySplit \
-        || { echo "FAILED: no message on the y split"; tail -n 15 log.ySplit; exit 1; }
-    echo "   y split: stops with 'decompose along z only'"
+    mpirun -np 2 --oversubscribe fdmSuspensionFoam -parallel > log.ySplit 2>&1 \
+        || { echo "FAILED: the y split (log: $PWD/log.ySplit)"; tail -n 15 log.ySplit; exit 1; }
+    grep -q "type *leesEdwardsProcessorCyclic" processor0/0.93/U \
+        || { echo "FAIL: processor0/0.93/U has no leesEdwardsProcessorCyclic patch"; exit 1; }
+    runLogged reconstructPar -latestTime || exit 1
+    uniformShearExact 0.93 "on 2 ranks split along y" || exit 1
+    foamDictionary -entry endTime -set 1.86 system/controlDict > /dev/null
+    foamDictionary -entry startFrom -set latestTime system/controlDict \
+        > /dev/null
+    mpirun -np 2 --oversubscribe fdmSuspensionFoam -parallel > log.ySplitRestart 2>&1 \
+        || { echo "FAILED: the y-split restart (log: $PWD/log.ySplitRestart)"; tail -n 15 log.ySplitRestart; exit 1; }
+    runLogged reconstructPar -latestTime || exit 1
+    uniformShearExact 1.86 "split along y, restarted (offset 0.36)"
 ) || exit 1
-

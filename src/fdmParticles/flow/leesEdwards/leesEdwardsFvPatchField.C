@@ -5,9 +5,6 @@
 
 #include "leesEdwardsFvPatchField.H"
 #include "boundBox.H"
-#include "processorCyclicPolyPatch.H"
-#include <algorithm>
-#include <cmath>
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -26,86 +23,28 @@ Type Foam::leesEdwardsFvPatchField<Type>::jump() const
 
 
 template<class Type>
-void Foam::leesEdwardsFvPatchField<Type>::updateMap() const
+const Foam::fdm::leesEdwardsRowMap&
+Foam::leesEdwardsFvPatchField<Type>::map() const
 {
     const label timeIndex = this->db().time().timeIndex();
-    if (mapTimeIndex_ == timeIndex && first_.size() == this->size())
+    if (!map_.valid() || mapTimeIndex_ != timeIndex)
     {
-        return;
-    }
-    mapTimeIndex_ = timeIndex;
-
-    const fvPatch& nbr = this->cyclicPatch().neighbFvPatch();
-    const vectorField& nbrCf = nbr.Cf();
-    const boundBox& box = this->patch().boundaryMesh().mesh().bounds();
-    const scalar Lx = box.span().x();
-    const scalar tol = 1e-6*Lx;
-
-    // The neighbour side's faces in rows of equal z, each sorted along x
-    labelList order(identity(nbr.size()));
-    std::sort
-    (
-        order.begin(), order.end(),
-        [&](const label a, const label b)
-        {
-            return mag(nbrCf[a].z() - nbrCf[b].z()) > tol
-                ? nbrCf[a].z() < nbrCf[b].z()
-                : nbrCf[a].x() < nbrCf[b].x();
-        }
-    );
-    DynamicList<label> rowStart;
-    forAll(order, i)
-    {
-        if (!i || mag(nbrCf[order[i]].z() - nbrCf[order[i - 1]].z()) > tol)
-        {
-            rowStart.append(i);
-        }
-    }
-    rowStart.append(order.size());
-
-    const scalar s = (upperSide() ? -1 : 1)*offset();
-    const vectorField& Cf = this->patch().Cf();
-    first_.setSize(this->size());
-    second_.setSize(this->size());
-    weight_.setSize(this->size());
-    forAll(Cf, f)
-    {
-        // The row of this face's z
-        label r = 0;
-        while
+        mapTimeIndex_ = timeIndex;
+        const boundBox& box = this->patch().boundaryMesh().mesh().bounds();
+        map_.reset
         (
-            r + 1 < rowStart.size() - 1
-         && nbrCf[order[rowStart[r]]].z() < Cf[f].z() - tol
-        )
-        {
-            ++r;
-        }
-        const label begin = rowStart[r];
-        const label n = rowStart[r + 1] - begin;
-        const scalar x0 = nbrCf[order[begin]].x();
-        const scalar dx = n > 1 ? nbrCf[order[begin + 1]].x() - x0 : Lx;
-        if
-        (
-            mag(nbrCf[order[begin]].z() - Cf[f].z()) > tol
-         || mag(n*dx - Lx) > tol
-        )
-        {
-            FatalErrorInFunction
-                << "Patch " << this->patch().name() << " of field "
-                << this->internalField().name() << ": the face at "
-                << Cf[f] << " has no whole row of " << nbr.name()
-                << " faces along x at its z (a Lees-Edwards row must lie"
-                << " on one processor, with uniform spacing: decompose"
-                << " along z only)" << exit(FatalError);
-        }
-        // Position along the row in spacings from its first face, periodic
-        scalar p = (Cf[f].x() + s - x0)/dx;
-        p -= n*std::floor(p/n);
-        const label k = min(label(std::floor(p)), n - 1);
-        first_[f] = order[begin + k];
-        second_[f] = order[begin + (k + 1) % n];
-        weight_[f] = 1 - (p - k);
+            new fdm::leesEdwardsRowMap
+            (
+                this->cyclicPatch().neighbFvPatch().Cf(),
+                this->patch().Cf(),
+                (upperSide() ? -1 : 1)*offset(),
+                box.span().x(),
+                "Patch " + this->patch().name() + " of field "
+              + this->internalField().name()
+            )
+        );
     }
+    return *map_;
 }
 
 
@@ -114,18 +53,9 @@ template<class Type2>
 Foam::tmp<Foam::Field<Type2>>
 Foam::leesEdwardsFvPatchField<Type>::shifted(const Field<Type2>& psi) const
 {
-    updateMap();
     const labelUList& nbrCells =
         this->cyclicPatch().neighbFvPatch().faceCells();
-    tmp<Field<Type2>> tpnf(new Field<Type2>(this->size()));
-    Field<Type2>& pnf = tpnf.ref();
-    forAll(pnf, f)
-    {
-        pnf[f] =
-            weight_[f]*psi[nbrCells[first_[f]]]
-          + (1 - weight_[f])*psi[nbrCells[second_[f]]];
-    }
-    return tpnf;
+    return map().interpolate(Field<Type2>(psi, nbrCells));
 }
 
 
@@ -198,22 +128,6 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
     jumps_(true),
     mapTimeIndex_(-1)
 {
-    // A decomposition across the sheared faces turns part of them into
-    // processorCyclic patches, which would couple them unsheared
-    for (const polyPatch& pp : p.patch().boundaryMesh())
-    {
-        const auto* proc = isA<processorCyclicPolyPatch>(pp);
-        if (proc && proc->referPatchID() == p.index())
-        {
-            FatalIOErrorInFunction(dict)
-                << "Patch " << p.name() << " of field "
-                << iF.name() << ": its faces are split between"
-                << " processors (" << pp.name() << "); a Lees-Edwards"
-                << " boundary needs whole x rows on each processor:"
-                << " decompose along z only (decomposeParDict coeffs.n"
-                << " (1 1 N))" << exit(FatalIOError);
-        }
-    }
     // The cyclic constructor evaluated the unsheared coupling
     this->evaluate(Pstream::commsTypes::blocking);
 }
@@ -268,11 +182,12 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 template<class Type>
 Foam::scalar Foam::leesEdwardsFvPatchField<Type>::offset() const
 {
-    const boundBox& box = this->patch().boundaryMesh().mesh().bounds();
-    const scalar Lx = box.span().x();
-    const scalar s =
-        shearRate_*box.span().y()*this->db().time().value();
-    return s - Lx*std::floor(s/Lx);
+    return fdm::leesEdwardsOffset
+    (
+        shearRate_,
+        this->patch().boundaryMesh().mesh().bounds(),
+        this->db().time().value()
+    );
 }
 
 

@@ -1,0 +1,312 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "leesEdwardsProcessorCyclicFvPatchField.H"
+#include "processorCyclicFvPatch.H"
+
+#if OPENFOAM >= 2106
+    #define FDM_LDU_ARGS const lduAddressing&, const label,
+#else
+    #define FDM_LDU_ARGS
+#endif
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class Type>
+bool Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::upperSide() const
+{
+    return this->size() && sum(this->patch().Sf()).y() > 0;
+}
+
+
+template<class Type>
+Type Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::jump() const
+{
+    return Zero;
+}
+
+
+template<class Type>
+const Foam::fdm::leesEdwardsRowMap&
+Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::map() const
+{
+    const label timeIndex = this->db().time().timeIndex();
+    if (!map_.valid() || mapTimeIndex_ != timeIndex)
+    {
+        mapTimeIndex_ = timeIndex;
+        const boundBox& box = this->patch().boundaryMesh().mesh().bounds();
+        const scalar s = fdm::leesEdwardsOffset
+        (
+            shearRate_, box, this->db().time().value()
+        );
+        // The received value of face f is that of the cell opposite it, at
+        // the same x and z: this side's faces are the row
+        map_.reset
+        (
+            new fdm::leesEdwardsRowMap
+            (
+                this->patch().Cf(),
+                this->patch().Cf(),
+                (upperSide() ? -1 : 1)*s,
+                box.span().x(),
+                "Patch " + this->patch().name() + " of field "
+              + this->internalField().name()
+            )
+        );
+    }
+    return *map_;
+}
+
+
+template<class Type>
+template<class Type2>
+void Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::sendInternal
+(
+    const Field<Type2>& psiInternal
+) const
+{
+    // Buffered (MPI_Bsend): the sends of all interfaces go out before any
+    // receive, as OpenFOAM's own processor patches do in blocking mode
+    refCast<const processorCyclicFvPatch>(this->patch()).send
+    (
+        Pstream::commsTypes::blocking,
+        Field<Type2>(psiInternal, this->patch().faceCells())
+    );
+    const_cast<leesEdwardsProcessorCyclicFvPatchField<Type>&>(*this)
+        .updatedMatrix() = false;
+}
+
+
+template<class Type>
+template<class Type2>
+void Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::addReceivedShifted
+(
+    Field<Type2>& result,
+    const bool add,
+    const scalarField& coeffs
+) const
+{
+    if (this->updatedMatrix())
+    {
+        return;
+    }
+    const Field<Type2> received
+    (
+        refCast<const processorCyclicFvPatch>(this->patch())
+       .template receive<Type2>(Pstream::commsTypes::blocking, this->size())
+    );
+    const Field<Type2> pnf(map().interpolate(received));
+    #if OPENFOAM >= 2106
+    this->addToInternalField
+    (
+        result, !add, this->patch().faceCells(), coeffs, pnf
+    );
+    #else
+    this->addToInternalField(result, !add, coeffs, pnf);
+    #endif
+    const_cast<leesEdwardsProcessorCyclicFvPatchField<Type>&>(*this)
+        .updatedMatrix() = true;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class Type>
+Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::
+leesEdwardsProcessorCyclicFvPatchField
+(
+    const fvPatch& p,
+    const DimensionedField<Type, volMesh>& iF
+)
+:
+    processorCyclicFvPatchField<Type>(p, iF),
+    shearRate_(0),
+    jumps_(true),
+    mapTimeIndex_(-1)
+{}
+
+
+template<class Type>
+Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::
+leesEdwardsProcessorCyclicFvPatchField
+(
+    const fvPatch& p,
+    const DimensionedField<Type, volMesh>& iF,
+    const dictionary& dict
+)
+:
+    processorCyclicFvPatchField<Type>(p, iF, dict),
+    shearRate_(dict.get<scalar>("shearRate")),
+    jumps_(dict.get<bool>("jumps")),
+    mapTimeIndex_(-1)
+{}
+
+
+template<class Type>
+Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::
+leesEdwardsProcessorCyclicFvPatchField
+(
+    const fvPatch& p,
+    const DimensionedField<Type, volMesh>& iF,
+    const Field<Type>& values,
+    const scalar shearRate,
+    const bool jumps
+)
+:
+    processorCyclicFvPatchField<Type>(p, iF, values),
+    shearRate_(shearRate),
+    jumps_(jumps),
+    mapTimeIndex_(-1)
+{
+    // Written with it, so that reading does not take this field type for
+    // the patch's own one
+    this->patchType() = processorCyclicFvPatch::typeName;
+}
+
+
+template<class Type>
+Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::
+leesEdwardsProcessorCyclicFvPatchField
+(
+    const leesEdwardsProcessorCyclicFvPatchField<Type>& ptf,
+    const fvPatch& p,
+    const DimensionedField<Type, volMesh>& iF,
+    const fvPatchFieldMapper& mapper
+)
+:
+    processorCyclicFvPatchField<Type>(ptf, p, iF, mapper),
+    shearRate_(ptf.shearRate_),
+    jumps_(ptf.jumps_),
+    mapTimeIndex_(-1)
+{}
+
+
+template<class Type>
+Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::
+leesEdwardsProcessorCyclicFvPatchField
+(
+    const leesEdwardsProcessorCyclicFvPatchField<Type>& ptf
+)
+:
+    processorCyclicFvPatchField<Type>(ptf),
+    shearRate_(ptf.shearRate_),
+    jumps_(ptf.jumps_),
+    mapTimeIndex_(-1)
+{}
+
+
+template<class Type>
+Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::
+leesEdwardsProcessorCyclicFvPatchField
+(
+    const leesEdwardsProcessorCyclicFvPatchField<Type>& ptf,
+    const DimensionedField<Type, volMesh>& iF
+)
+:
+    processorCyclicFvPatchField<Type>(ptf, iF),
+    shearRate_(ptf.shearRate_),
+    jumps_(ptf.jumps_),
+    mapTimeIndex_(-1)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class Type>
+Foam::tmp<Foam::Field<Type>>
+Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::neighbourValues
+(
+    const Field<Type>& received,
+    const bool withJump
+) const
+{
+    tmp<Field<Type>> tnbr(map().interpolate(received));
+    if (withJump)
+    {
+        tnbr.ref() += jump();
+    }
+    return tnbr;
+}
+
+
+template<class Type>
+void Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::evaluate
+(
+    const Pstream::commsTypes commsType
+)
+{
+    processorCyclicFvPatchField<Type>::evaluate(commsType);
+    if (Pstream::parRun())
+    {
+        const Field<Type> received(*this);
+        Field<Type>::operator=(neighbourValues(received));
+    }
+}
+
+
+template<class Type>
+void Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::
+initInterfaceMatrixUpdate
+(
+    solveScalarField&, const bool, FDM_LDU_ARGS
+    const solveScalarField& psiInternal, const scalarField&,
+    const direction, const Pstream::commsTypes
+) const
+{
+    sendInternal(psiInternal);
+}
+
+
+template<class Type>
+void Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::updateInterfaceMatrix
+(
+    solveScalarField& result, const bool add, FDM_LDU_ARGS
+    const solveScalarField&, const scalarField& coeffs,
+    const direction, const Pstream::commsTypes
+) const
+{
+    addReceivedShifted(result, add, coeffs);
+}
+
+
+template<class Type>
+void Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::
+initInterfaceMatrixUpdate
+(
+    Field<Type>&, const bool, FDM_LDU_ARGS
+    const Field<Type>& psiInternal, const scalarField&,
+    const Pstream::commsTypes
+) const
+{
+    sendInternal(psiInternal);
+}
+
+
+template<class Type>
+void Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::updateInterfaceMatrix
+(
+    Field<Type>& result, const bool add, FDM_LDU_ARGS
+    const Field<Type>&, const scalarField& coeffs,
+    const Pstream::commsTypes
+) const
+{
+    addReceivedShifted(result, add, coeffs);
+}
+
+
+template<class Type>
+void Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::write
+(
+    Ostream& os
+) const
+{
+    processorCyclicFvPatchField<Type>::write(os);
+    os.writeEntry("shearRate", shearRate_);
+    os.writeEntry("jumps", jumps_);
+}
+
+#undef FDM_LDU_ARGS
+
+// ************************************************************************* //
