@@ -3,7 +3,8 @@
 // (k_n given, a = 1), equal and opposite across a periodic boundary, none
 // beyond the roughness; the accumulated slip survives the restart state; a
 // sphere driven into another far harder than the barrier's force at the
-// start gap settles on the barrier without crossing its floor.
+// start gap settles on the barrier without crossing its floor; a pair
+// found below the floor is pushed back above it by converged solves.
 
 #include "particleContacts.H"
 #include "pairSearch.H"
@@ -195,4 +196,107 @@ TEST(particleContacts, drivenPairSettlesOnTheBarrierWithoutCrossingTheFloor)
     EXPECT_GT(smallest, floorGap);
     EXPECT_LT(hi - floorGap, 1e-2*hr);
     EXPECT_NEAR(gap, hi, 1e-6*hr);
+}
+
+
+TEST(particleContacts, pairBelowTheFloorIsPushedBackWithAConvergedSolve)
+{
+    // A pair that crossed the barrier's floor within a step (gap -0.17 h_r,
+    // as at phi0 = 0.52, strain 0.754), sphere 0 held, sphere 1 free
+    // against a drag R (the order of the lubrication resistance at a gap
+    // of h_r): each particle solve converges, the barrier moves sphere 1
+    // by less than h_r a step, and the pair is back above the floor within
+    // 20 steps of gammaDot dt = 4e-3 (before, linearised at the floor,
+    // k' dt was 1e8 times R, and in the suspension the solve ran to its
+    // iteration limit)
+    contactCase cc("particleContactsBelowFloor");
+    autoPtr<contactModel> m = cc.model(2);
+    const scalar dt = 4e-3, R = 1e3;
+    pointField x({point(3, 2, 5), point(5 - 0.17*hr, 2, 5)});
+    List<vector> U(2, Zero), Uold(2, Zero), Omega(2, Zero);
+    bool history = false;
+    scalar gap = x[1].x() - x[0].x() - 2;
+    label steps = 0;
+    for (; steps < 20 && gap <= gapFloor; ++steps)
+    {
+        const fdm::positionStep s(fdm::positionStep::of(history, dt));
+        DynamicList<labelPair> near;
+        const scalarField radii(2, 1.0);
+        fdm::findNearPairs(cc.box, x, radii, m->pairReach(), near);
+        m->update(x, radii, cc.box, near, s, Uold);
+        for (label outer = 0; outer < 8; ++outer)
+        {
+            if (outer)
+            {
+                m->relinearise(U);
+            }
+            fdm::particleVelocitySystem system(2);
+            for (direction d = 0; d < 6; ++d)
+            {
+                system.addEntry(6 + d, 6 + d, R);
+                system.prescribe(0, d, 0);
+            }
+            system.addRhs(1, m->loads().force[1], m->loads().torque[1]);
+            m->addTo(system, 1);
+            const fdm::particleVelocitySystem::solveInfo info =
+                system.solve(1e-10, 200, U, Omega, 0);
+            ASSERT_TRUE(info.converged)
+                << "step " << steps << " outer " << outer
+                << ": relative residual " << info.relativeResidual;
+        }
+        m->advance(U, Omega, dt);
+        EXPECT_LT(mag(s.displacement(U[1], Uold[1])), hr) << steps;
+        forAll(x, p)
+        {
+            x[p] += s.displacement(U[p], Uold[p]);
+        }
+        Uold = U;
+        history = true;
+        gap = x[1].x() - x[0].x() - 2;
+    }
+    EXPECT_GT(gap, gapFloor) << "after " << steps << " steps";
+}
+
+
+TEST(particleContacts, pairBelowTheFloorIsAsStiffAsAHundredthOfHrAboveIt)
+{
+    // The response of sphere 1 to a unit push against sphere 0 (held),
+    // with a drag R: 1/(R + k' dt) for the stiffness k' the contact
+    // brings into the particle system.  Found below the floor (or on it),
+    // the contact is linearised a hundredth of h_r above the floor: the
+    // same response as there, where k' dt is about 1e2 R at dt = 4e-3.
+    // Linearised on the floor itself it was about 1e8 R.
+    contactCase cc("particleContactsBelowFloorStiffness");
+    const scalar dt = 4e-3, R = 1e3;
+    auto response = [&](const scalar gap)
+    {
+        autoPtr<contactModel> m = cc.model(2);
+        const pointField x({point(3, 2, 5), point(5 + gap, 2, 5)});
+        DynamicList<labelPair> near;
+        fdm::findNearPairs(cc.box, x, scalarField(2, 1.0), m->pairReach(),
+            near);
+        m->update
+        (
+            x, scalarField(2, 1.0), cc.box, near, fdm::positionStep::euler(dt),
+            List<vector>(2, Zero)
+        );
+        fdm::particleVelocitySystem system(2);
+        for (direction d = 0; d < 6; ++d)
+        {
+            system.addEntry(6 + d, 6 + d, R);
+            system.prescribe(0, d, 0);
+        }
+        system.addRhs(1, vector(-1, 0, 0), Zero);
+        m->addTo(system, 1);
+        List<vector> U(2, Zero), Omega(2, Zero);
+        system.solve(1e-12, 100, U, Omega, 0);
+        return -U[1].x();
+    };
+    const scalar above = response(gapFloor + 1e-2*hr);
+    EXPECT_LT(above, 1/R);
+    EXPECT_GT(above, 1e-4/R);
+    for (const scalar gap : {-0.17*hr, gapFloor})
+    {
+        EXPECT_NEAR(response(gap), above, 1e-9*above) << "gap " << gap;
+    }
 }
