@@ -239,7 +239,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     box_(point::zero, point::one, FixedList<bool, 3>(false)),
     domainVolume_(gSum(mesh.V())),
     solved_(false),
-    hasHistory_(false),
+    historyDeltaT_(0),
     firstSolveDone_(false),
     verbose_(true),
     system_(0),

@@ -168,7 +168,7 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
     contacts_->update
     (
         state_.position, state_.radius, box_, near_,
-        fdm::positionStep::of(hasHistory_, mesh_.time().deltaTValue()),
+        fdm::positionStep::after(historyDeltaT_, mesh_.time().deltaTValue()),
         state_.Uold
     );
     if (verbose_)
@@ -223,7 +223,7 @@ void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
     // The sheared images of the new time (Lees-Edwards): a particle
     // wrapped across the sheared faces takes the flow's velocity there
     fdm::setLeesEdwardsShear(mesh_, box_);
-    const fdm::positionStep step(fdm::positionStep::of(hasHistory_, deltaT));
+    const fdm::positionStep step(fdm::positionStep::after(historyDeltaT_, deltaT));
     forAll(state_.position, p)
     {
         const point x =
@@ -233,7 +233,7 @@ void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
         state_.position[p] = box_.wrap(x);
     }
     state_.Uold = state_.U;
-    hasHistory_ = true;
+    historyDeltaT_ = deltaT;
     solved_ = false;
 
     // A particle pushed through a wall means the coupling has failed

@@ -112,7 +112,8 @@ void Foam::fdmParticleCloud::writeState() const
         {
             os.writeEntry("nParticles", size());
             os.writeEntry("solved", solved_);
-            os.writeEntry("hasHistory", hasHistory_);
+            os.writeEntry("hasHistory", historyDeltaT_ > 0);
+            os.writeEntry("historyDeltaT", historyDeltaT_);
             os.writeEntry("radius", state_.radius);
             os.writeEntry("position", state_.position);
             os.writeEntry("velocity", state_.U);

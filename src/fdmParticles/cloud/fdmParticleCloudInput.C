@@ -221,7 +221,11 @@ void Foam::fdmParticleCloud::readState()
     // the one the interrupted run wrote
     contacts_->readState(state, contact_);
     solved_ = state.get<bool>("solved");
-    hasHistory_ = state.get<bool>("hasHistory");
+    // The step of the previous velocities; a state written before it was
+    // kept took the current one
+    historyDeltaT_ = state.get<bool>("hasHistory")
+      ? state.getOrDefault<scalar>("historyDeltaT", mesh_.time().deltaTValue())
+      : 0;
     // coldFluid: a state restored from a particle checkpoint with the
     // fields of time 0 (fdmPost.checkpoint): the Stokes flow has no memory,
     // but its first solve starts cold and is converged as at time 0

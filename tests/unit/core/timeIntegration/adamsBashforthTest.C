@@ -1,4 +1,6 @@
-// Unit tests for the particle position update (adamsBashforth.H)
+// Unit tests for the particle position update (adamsBashforth.H): exact
+// for velocities linear in time at a constant and at a changing step,
+// second order
 
 #include "adamsBashforth.H"
 #include "point.H"
@@ -59,4 +61,33 @@ TEST(adamsBashforth, secondOrderConvergence)
     const scalar e2 = integrate(200);
     const scalar order = std::log2(e1/e2);
     EXPECT_NEAR(order, 2.0, 0.1);
+}
+
+
+TEST(adamsBashforth, variableStepExactForVelocityLinearInTime)
+{
+    // Steps of 0.1, then 0.05 (a run continued at half its deltaT), then
+    // 0.2: each step after one of dt0 is exact for U = a + b t, and the
+    // constant-step weights are not once the step changes
+    const vector a(0.3, -1.0, 2.0);
+    const vector b(1.5, 0.25, -0.75);
+    auto exact = [&](const scalar t) { return point(a*t + 0.5*b*t*t); };
+    scalar t = 0.1, dt0 = 0.1;
+    point x = exact(t);
+    for (const scalar dt : {0.1, 0.05, 0.05, 0.2, 0.2})
+    {
+        const vector U = a + b*t, U0 = a + b*(t - dt0);
+        x += fdm::positionStep::after(dt0, dt).displacement(U, U0);
+        if (dt != dt0)
+        {
+            const point constant = exact(t)
+              + fdm::positionStep::adamsBashforth2(dt).displacement(U, U0);
+            EXPECT_GT(mag(constant - exact(t + dt)), 1e-4);
+        }
+        t += dt;
+        dt0 = dt;
+        EXPECT_LT(mag(x - exact(t)), 1e-12*mag(exact(t))) << "t " << t;
+    }
+    // No history: forward Euler
+    EXPECT_EQ(fdm::positionStep::after(0, 0.1).previous, 0);
 }
