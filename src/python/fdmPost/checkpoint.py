@@ -9,6 +9,7 @@ core series of its records (fdmPost.coreRecords), not its fields.
     python3 -m fdmPost.checkpoint save CASE DEST [--layer L] [--particles]
                                        [--forces NAME...]
     python3 -m fdmPost.checkpoint restore DEST CASE --procs N
+    python3 -m fdmPost.checkpoint summary DEST [--start STRAIN]
 
 save: DEST/particleState.<time> of CASE's newest time with a particle
 state and the run's records up to that time, after those DEST already
@@ -18,6 +19,9 @@ with --particles the particle series (DEST/particles.h5,
 fdmPost.thinSeries: a run of few particles), with --forces the rows of
 those `forces` function objects (DEST/<NAME>.csv).  It refuses to replace
 a later checkpoint with an earlier one.
+summary: the core rheology of DEST's records (every segment of the run,
+where a case continued on another machine holds its last segment only)
+from strain STRAIN (default 5) on, against eq 4.12.
 restore: the state as time <time> of a case set up at time 0 (startFrom
 latestTime in its system/controlDict), the fields of time 0 copied to it
 (processor*/0 when decomposed) and coldFluid set in the particle state:
@@ -34,7 +38,8 @@ import sys
 
 from fdmPost import segments, thinSeries
 from fdmPost.coreRecords import CoreRecords
-from fdmPost.rheology import case_description, channel_case, number
+from fdmPost.rheology import (case_description, channel_case, core_rheology,
+                              maron_pierce, number)
 
 STATE = "particleState."
 
@@ -214,6 +219,22 @@ def restore(dest, case, procs):
     return time
 
 
+def summary(dest, start=5.0):
+    """The core rheology of the checkpoint DEST's records from strain start
+    on, as text: phi_core, eta_core (with eq 4.12 at that phi_core), N1 and
+    N2 over Sigma_12, the contact share, each with its standard error."""
+    records = CoreRecords.read(f"{dest}/coreRecords.csv")
+    rate = records.meta["shearRate"]
+    r = core_rheology(records, start / rate)
+    pm = lambda k: f"{r[k][0]:.3f} +- {r[k][1]:.3f}"  # noqa: E731
+    return (f"{records.meta.get('case', dest)}: strain {records.strain():.2f},"
+            f" {r['records']} records from strain {start:g}:"
+            f" phi_core {pm('phiCore')}, eta_core {pm('etaCore')}"
+            f" (eq 4.12: {maron_pierce(r['phiCore'][0]):.3f}),"
+            f" N1/Sigma12 {pm('N1')}, N2/Sigma12 {pm('N2')},"
+            f" contact share {pm('contactShare')}")
+
+
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawTextHelpFormatter)
@@ -231,9 +252,14 @@ def main(argv=None):
     r.add_argument("dest")
     r.add_argument("case")
     r.add_argument("--procs", type=int, default=1)
+    m = sub.add_parser("summary")
+    m.add_argument("dest")
+    m.add_argument("--start", type=float, default=5.0)
     args = ap.parse_args(argv)
     if args.command == "save":
         save(args.case, args.dest, args.layer, args.particles, args.forces)
+    elif args.command == "summary":
+        print(summary(args.dest, args.start))
     else:
         restore(args.dest, args.case, args.procs)
 

@@ -2,7 +2,8 @@
 into segments (each restarted at the time of its checkpoint, its first
 record written again) and joined gives the core averages of the unbroken
 run; the table round trip; the wall layers' phi against the phi(y)
-profile; save keeps records only up to the saved state
+profile; the summary of a checkpoint is that of all its records; save
+keeps records only up to the saved state
 and never replaces a later checkpoint; restore marks the state cold and
 copies the fields of time 0."""
 
@@ -70,6 +71,17 @@ class JoinedSegments(unittest.TestCase):
             np.testing.assert_allclose(getattr(back, name),
                                        getattr(records, name), rtol=1e-8,
                                        atol=1e-12, err_msg=name)
+
+    def test_summary_is_over_every_record_from_start(self):
+        data = synthetic_run()
+        whole = core_rheology(series(data), 1.0)
+        with tempfile.TemporaryDirectory() as d:
+            CoreRecords.from_series(series(data), META).write(
+                f"{d}/coreRecords.csv")
+            text = checkpoint.summary(d, 1.0)
+        self.assertIn(f"{whole['records']} records from strain 1", text)
+        self.assertIn(f"eta_core {whole['etaCore'][0]:.3f} +- "
+                      f"{whole['etaCore'][1]:.3f}", text)
 
     def test_wall_phi_is_the_profile_of_the_wall_layers(self):
         # phi(y) on 1-wide bins (CouetteSeries.profiles) over the two

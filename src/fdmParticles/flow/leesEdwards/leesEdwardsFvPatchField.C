@@ -9,53 +9,18 @@
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class Type>
-bool Foam::leesEdwardsFvPatchField<Type>::upperSide() const
-{
-    return this->size() && sum(this->patch().Sf()).y() > 0;
-}
-
-
-template<class Type>
-Type Foam::leesEdwardsFvPatchField<Type>::jump() const
-{
-    return Zero;
-}
-
-
-template<class Type>
-const Foam::fdm::leesEdwardsRowMap&
-Foam::leesEdwardsFvPatchField<Type>::map() const
-{
-    const label timeIndex = this->db().time().timeIndex();
-    if (!map_.valid() || mapTimeIndex_ != timeIndex)
-    {
-        mapTimeIndex_ = timeIndex;
-        const boundBox& box = this->patch().boundaryMesh().mesh().bounds();
-        map_.reset
-        (
-            new fdm::leesEdwardsRowMap
-            (
-                this->cyclicPatch().neighbFvPatch().Cf(),
-                this->patch().Cf(),
-                (upperSide() ? -1 : 1)*offset(),
-                box.span().x(),
-                "Patch " + this->patch().name() + " of field "
-              + this->internalField().name()
-            )
-        );
-    }
-    return *map_;
-}
-
-
-template<class Type>
 template<class Type2>
 Foam::tmp<Foam::Field<Type2>>
 Foam::leesEdwardsFvPatchField<Type>::shifted(const Field<Type2>& psi) const
 {
     const labelUList& nbrCells =
         this->cyclicPatch().neighbFvPatch().faceCells();
-    return map().interpolate(Field<Type2>(psi, nbrCells));
+    return side_.map
+    (
+        this->patch(), this->cyclicPatch().neighbFvPatch().Cf(),
+        "Patch " + this->patch().name() + " of field "
+      + this->internalField().name()
+    ).interpolate(Field<Type2>(psi, nbrCells));
 }
 
 
@@ -91,9 +56,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 )
 :
     cyclicFvPatchField<Type>(p, iF),
-    shearRate_(0),
-    jumps_(true),
-    mapTimeIndex_(-1)
+    side_(0, true)
 {}
 
 
@@ -107,9 +70,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 )
 :
     cyclicFvPatchField<Type>(p, iF),
-    shearRate_(shearRate),
-    jumps_(jumps),
-    mapTimeIndex_(-1)
+    side_(shearRate, jumps)
 {
     this->evaluate(Pstream::commsTypes::blocking);
 }
@@ -124,9 +85,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 )
 :
     cyclicFvPatchField<Type>(p, iF, dict),
-    shearRate_(dict.get<scalar>("shearRate")),
-    jumps_(true),
-    mapTimeIndex_(-1)
+    side_(dict.get<scalar>("shearRate"), true)
 {
     // The cyclic constructor evaluated the unsheared coupling
     this->evaluate(Pstream::commsTypes::blocking);
@@ -143,9 +102,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 )
 :
     cyclicFvPatchField<Type>(ptf, p, iF, mapper),
-    shearRate_(ptf.shearRate_),
-    jumps_(ptf.jumps_),
-    mapTimeIndex_(-1)
+    side_(ptf.side_)
 {}
 
 
@@ -157,9 +114,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 :
     cyclicLduInterfaceField(),
     cyclicFvPatchField<Type>(ptf),
-    shearRate_(ptf.shearRate_),
-    jumps_(ptf.jumps_),
-    mapTimeIndex_(-1)
+    side_(ptf.side_)
 {}
 
 
@@ -171,9 +126,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 )
 :
     cyclicFvPatchField<Type>(ptf, iF),
-    shearRate_(ptf.shearRate_),
-    jumps_(ptf.jumps_),
-    mapTimeIndex_(-1)
+    side_(ptf.side_)
 {}
 
 
@@ -182,12 +135,7 @@ Foam::leesEdwardsFvPatchField<Type>::leesEdwardsFvPatchField
 template<class Type>
 Foam::scalar Foam::leesEdwardsFvPatchField<Type>::offset() const
 {
-    return fdm::leesEdwardsOffset
-    (
-        shearRate_,
-        this->patch().boundaryMesh().mesh().bounds(),
-        this->db().time().value()
-    );
+    return side_.offset(this->patch());
 }
 
 
@@ -195,7 +143,9 @@ template<class Type>
 Foam::tmp<Foam::Field<Type>>
 Foam::leesEdwardsFvPatchField<Type>::patchNeighbourField() const
 {
-    return shifted(this->primitiveField()) + jump();
+    return
+        shifted(this->primitiveField())
+      + side_.template jump<Type>(this->patch());
 }
 
 
@@ -270,7 +220,7 @@ template<class Type>
 void Foam::leesEdwardsFvPatchField<Type>::write(Ostream& os) const
 {
     fvPatchField<Type>::write(os);
-    os.writeEntry("shearRate", shearRate_);
+    os.writeEntry("shearRate", side_.shearRate());
 }
 
 

@@ -13,23 +13,6 @@ Description
 #include "volFields.H"
 #include "addToRunTimeSelectionTable.H"
 
-// * * * * * * * * * * * * * * * Specialisations * * * * * * * * * * * * * * //
-
-template<>
-Foam::vector Foam::leesEdwardsFvPatchField<Foam::vector>::jump() const
-{
-    if (!jumps_)
-    {
-        return Zero;
-    }
-    // The image one period up moves at +gammaDot L_y along x: seen from
-    // the upper side the neighbour is faster, from the lower side slower
-    const scalar du = shearRate_*patch().boundaryMesh().mesh().bounds()
-        .span().y();
-    return vector(upperSide() ? du : -du, 0, 0);
-}
-
-
 namespace Foam
 {
     typedef leesEdwardsFvPatchField<scalar> leesEdwardsFvPatchScalarField;

@@ -15,48 +15,17 @@
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class Type>
-bool Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::upperSide() const
-{
-    return this->size() && sum(this->patch().Sf()).y() > 0;
-}
-
-
-template<class Type>
-Type Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::jump() const
-{
-    return Zero;
-}
-
-
-template<class Type>
 const Foam::fdm::leesEdwardsRowMap&
 Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::map() const
 {
-    const label timeIndex = this->db().time().timeIndex();
-    if (!map_.valid() || mapTimeIndex_ != timeIndex)
-    {
-        mapTimeIndex_ = timeIndex;
-        const boundBox& box = this->patch().boundaryMesh().mesh().bounds();
-        const scalar s = fdm::leesEdwardsOffset
-        (
-            shearRate_, box, this->db().time().value()
-        );
-        // The received value of face f is that of the cell opposite it, at
-        // the same x and z: this side's faces are the row
-        map_.reset
-        (
-            new fdm::leesEdwardsRowMap
-            (
-                this->patch().Cf(),
-                this->patch().Cf(),
-                (upperSide() ? -1 : 1)*s,
-                box.span().x(),
-                "Patch " + this->patch().name() + " of field "
-              + this->internalField().name()
-            )
-        );
-    }
-    return *map_;
+    // The received value of face f is that of the cell opposite it, at the
+    // same x and z: this side's faces are the row
+    return side_.map
+    (
+        this->patch(), this->patch().Cf(),
+        "Patch " + this->patch().name() + " of field "
+      + this->internalField().name()
+    );
 }
 
 
@@ -122,9 +91,7 @@ leesEdwardsProcessorCyclicFvPatchField
 )
 :
     processorCyclicFvPatchField<Type>(p, iF),
-    shearRate_(0),
-    jumps_(true),
-    mapTimeIndex_(-1)
+    side_(0, true)
 {}
 
 
@@ -138,9 +105,7 @@ leesEdwardsProcessorCyclicFvPatchField
 )
 :
     processorCyclicFvPatchField<Type>(p, iF, dict),
-    shearRate_(dict.get<scalar>("shearRate")),
-    jumps_(dict.get<bool>("jumps")),
-    mapTimeIndex_(-1)
+    side_(dict.get<scalar>("shearRate"), dict.get<bool>("jumps"))
 {}
 
 
@@ -156,9 +121,7 @@ leesEdwardsProcessorCyclicFvPatchField
 )
 :
     processorCyclicFvPatchField<Type>(p, iF, values),
-    shearRate_(shearRate),
-    jumps_(jumps),
-    mapTimeIndex_(-1)
+    side_(shearRate, jumps)
 {
     // Written with it, so that reading does not take this field type for
     // the patch's own one
@@ -177,9 +140,7 @@ leesEdwardsProcessorCyclicFvPatchField
 )
 :
     processorCyclicFvPatchField<Type>(ptf, p, iF, mapper),
-    shearRate_(ptf.shearRate_),
-    jumps_(ptf.jumps_),
-    mapTimeIndex_(-1)
+    side_(ptf.side_)
 {}
 
 
@@ -191,9 +152,7 @@ leesEdwardsProcessorCyclicFvPatchField
 )
 :
     processorCyclicFvPatchField<Type>(ptf),
-    shearRate_(ptf.shearRate_),
-    jumps_(ptf.jumps_),
-    mapTimeIndex_(-1)
+    side_(ptf.side_)
 {}
 
 
@@ -206,9 +165,7 @@ leesEdwardsProcessorCyclicFvPatchField
 )
 :
     processorCyclicFvPatchField<Type>(ptf, iF),
-    shearRate_(ptf.shearRate_),
-    jumps_(ptf.jumps_),
-    mapTimeIndex_(-1)
+    side_(ptf.side_)
 {}
 
 
@@ -225,7 +182,7 @@ Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::neighbourValues
     tmp<Field<Type>> tnbr(map().interpolate(received));
     if (withJump)
     {
-        tnbr.ref() += jump();
+        tnbr.ref() += side_.template jump<Type>(this->patch());
     }
     return tnbr;
 }
@@ -303,8 +260,8 @@ void Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::write
 ) const
 {
     processorCyclicFvPatchField<Type>::write(os);
-    os.writeEntry("shearRate", shearRate_);
-    os.writeEntry("jumps", jumps_);
+    os.writeEntry("shearRate", side_.shearRate());
+    os.writeEntry("jumps", side_.jumps());
 }
 
 #undef FDM_LDU_ARGS

@@ -7,24 +7,6 @@
 #include "addToRunTimeSelectionTable.H"
 #include "volFields.H"
 
-// * * * * * * * * * * * * * * * * Specialisations  * * * * * * * * * * * * * //
-
-template<>
-Foam::vector Foam::leesEdwardsProcessorCyclicFvPatchField<Foam::vector>::jump()
-const
-{
-    if (!jumps_)
-    {
-        return Zero;
-    }
-    // As leesEdwardsFvPatchField: seen from the upper side the image one
-    // period up is faster by gammaDot L_y, from the lower side slower
-    const scalar du =
-        shearRate_*patch().boundaryMesh().mesh().bounds().span().y();
-    return vector(upperSide() ? du : -du, 0, 0);
-}
-
-
 namespace Foam
 {
     typedef leesEdwardsProcessorCyclicFvPatchField<scalar>
