@@ -225,6 +225,9 @@ def summary(dest, start=5.0):
     N2 over Sigma_12, the contact share, each with its standard error."""
     records = CoreRecords.read(f"{dest}/coreRecords.csv")
     rate = records.meta["shearRate"]
+    if not (records.t >= start / rate).any():
+        return (f"{records.meta.get('case', dest)}: strain"
+                f" {records.strain():.2f}, no records from strain {start:g}")
     r = core_rheology(records, start / rate)
     pm = lambda k: f"{r[k][0]:.3f} +- {r[k][1]:.3f}"  # noqa: E731
     return (f"{records.meta.get('case', dest)}: strain {records.strain():.2f},"

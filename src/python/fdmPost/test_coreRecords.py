@@ -82,6 +82,11 @@ class JoinedSegments(unittest.TestCase):
         self.assertIn(f"{whole['records']} records from strain 1", text)
         self.assertIn(f"eta_core {whole['etaCore'][0]:.3f} +- "
                       f"{whole['etaCore'][1]:.3f}", text)
+        with tempfile.TemporaryDirectory() as d:
+            CoreRecords.from_series(series(data), META).write(
+                f"{d}/coreRecords.csv")
+            self.assertIn("no records from strain 99",
+                          checkpoint.summary(d, 99.0))
 
     def test_wall_phi_is_the_profile_of_the_wall_layers(self):
         # phi(y) on 1-wide bins (CouetteSeries.profiles) over the two
