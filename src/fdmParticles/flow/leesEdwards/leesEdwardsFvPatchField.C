@@ -18,9 +18,8 @@ Foam::leesEdwardsFvPatchField<Type>::shifted(const Field<Type2>& psi) const
     return side_.map
     (
         this->patch(), this->cyclicPatch().neighbFvPatch().Cf(),
-        "Patch " + this->patch().name() + " of field "
-      + this->internalField().name()
-    ).interpolate(Field<Type2>(psi, nbrCells));
+        this->internalField().name()
+    ).template interpolate<Type2>(UIndirectList<Type2>(psi, nbrCells));
 }
 
 

@@ -22,9 +22,7 @@ Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::map() const
     // same x and z: this side's faces are the row
     return side_.map
     (
-        this->patch(), this->patch().Cf(),
-        "Patch " + this->patch().name() + " of field "
-      + this->internalField().name()
+        this->patch(), this->patch().Cf(), this->internalField().name()
     );
 }
 
@@ -66,7 +64,7 @@ void Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::addReceivedShifted
         refCast<const processorCyclicFvPatch>(this->patch())
        .template receive<Type2>(Pstream::commsTypes::blocking, this->size())
     );
-    const Field<Type2> pnf(map().interpolate(received));
+    const Field<Type2> pnf(map().template interpolate<Type2>(received));
     #if OPENFOAM >= 2106
     this->addToInternalField
     (
@@ -179,7 +177,7 @@ Foam::leesEdwardsProcessorCyclicFvPatchField<Type>::neighbourValues
     const bool withJump
 ) const
 {
-    tmp<Field<Type>> tnbr(map().interpolate(received));
+    tmp<Field<Type>> tnbr(map().template interpolate<Type>(received));
     if (withJump)
     {
         tnbr.ref() += side_.template jump<Type>(this->patch());

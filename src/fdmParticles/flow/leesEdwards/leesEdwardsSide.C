@@ -62,7 +62,7 @@ const Foam::fdm::leesEdwardsRowMap& Foam::fdm::leesEdwardsSide::map
 (
     const fvPatch& p,
     const vectorField& rowCf,
-    const string& where
+    const word& fieldName
 ) const
 {
     const label timeIndex = p.boundaryMesh().mesh().time().timeIndex();
@@ -74,7 +74,8 @@ const Foam::fdm::leesEdwardsRowMap& Foam::fdm::leesEdwardsSide::map
             new leesEdwardsRowMap
             (
                 rowCf, p.Cf(), (upper(p) ? -1 : 1)*offset(p),
-                p.boundaryMesh().mesh().bounds().span().x(), where
+                p.boundaryMesh().mesh().bounds().span().x(),
+                "Patch " + p.name() + " of field " + fieldName
             )
         );
     }

@@ -39,7 +39,7 @@ TEST(leesEdwardsRowMap, shiftedPointsInterpolateLinearly)
     for (const scalar s : {0.0, 0.3, -0.3, 0.25, 1.55})
     {
         const fdm::leesEdwardsRowMap map(Cf, Cf, s, 1, "test");
-        const scalarField at(map.interpolate(x));
+        const scalarField at(map.interpolate<scalar>(x));
         forAll(Cf, f)
         {
             // Exact where x + s and its two faces do not straddle the wrap
@@ -62,14 +62,14 @@ TEST(leesEdwardsRowMap, wrapsPeriodicallyWithinTheRow)
     const fdm::leesEdwardsRowMap map(Cf, Cf, 0.3, 1, "test");
     scalarField values(Cf.size(), 0);
     values[7] = 1;
-    EXPECT_NEAR(map.interpolate(values)()[4], 0.8, 1e-14);
+    EXPECT_NEAR(map.interpolate<scalar>(values)()[4], 0.8, 1e-14);
     values = 0;
     values[6] = 1;
-    EXPECT_NEAR(map.interpolate(values)()[4], 0.2, 1e-14);
+    EXPECT_NEAR(map.interpolate<scalar>(values)()[4], 0.2, 1e-14);
     // Nothing from the other row
     values = 0;
     values[0] = values[1] = values[2] = values[3] = 1;
-    EXPECT_NEAR(map.interpolate(values)()[4], 0, 1e-14);
+    EXPECT_NEAR(map.interpolate<scalar>(values)()[4], 0, 1e-14);
 }
 
 

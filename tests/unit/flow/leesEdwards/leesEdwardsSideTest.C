@@ -41,7 +41,7 @@ TEST(leesEdwardsSide, mapKeptForItsTimeIndex)
     // The row of the lower side's x values at the upper faces moved back
     // by the offset 0.3 (2.4 cells): x - 0.3 modulo 1, away from the wrap
     const scalarField x(lower.Cf().component(vector::X));
-    const scalarField at(first->interpolate(x));
+    const scalarField at(first->interpolate<scalar>(x));
     forAll(at, f)
     {
         const scalar p = upper.Cf()[f].x() - 0.3;
