@@ -206,14 +206,13 @@ void Foam::particleContacts::update
     // a resistance of the lubrication's size, and the particle velocity
     // solve of a dense suspension stopped converging (phi0 = 0.52, strain
     // 0.754: 3 gaps below the floor, CG residual 1.7e4 after 1000
-    // iterations).  Gaps above that keep their
-    // own linearisation, so that a contact resting on the barrier rests
-    // at its balance.
+    // iterations).  Gaps above that keep their own linearisation, so that
+    // a contact resting on the barrier rests at its balance.
+    const scalar hr = law_->roughness();
     List<scalar> startGaps(contacts_.size());
     forAll(startGaps, c)
     {
         const fdm::contactGeometry& g = contacts_[c].geometry;
-        const scalar hr = law_->roughness();
         startGaps[c] = g.gap < g.floorGap + 1e-4*hr
           ? g.floorGap + 1e-2*hr
           : g.gap;

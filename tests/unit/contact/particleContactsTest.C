@@ -67,7 +67,10 @@ struct contactCase
         bool& history, const scalar dt, const scalar R, const scalar P
     ) const
     {
-        const fdm::positionStep s(fdm::positionStep::of(history, dt));
+        const fdm::positionStep s
+        (
+            fdm::positionStep::after(history ? dt : 0, dt)
+        );
         DynamicList<labelPair> near;
         const scalarField radii(2, 1.0);
         fdm::findNearPairs(box, x, radii, m.pairReach(), near);

@@ -44,13 +44,13 @@ TEST(adamsBashforth, secondOrderConvergence)
     auto integrate = [&](const label n)
     {
         const scalar dt = 2.0/n;
-        point x = fdm::positionStep::of(false, dt).displacement
+        point x = fdm::positionStep::after(0, dt).displacement
         (
             velocity(0), vector::zero
         );
         for (label k = 1; k < n; ++k)
         {
-            x += fdm::positionStep::of(true, dt)
+            x += fdm::positionStep::after(dt, dt)
                 .displacement(velocity(k*dt), velocity((k - 1)*dt));
         }
         const point exact(std::sin(2.0), std::cos(2.0) - 1.0, 2.0);
