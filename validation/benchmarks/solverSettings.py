@@ -144,6 +144,9 @@ SETTINGS["innerBetween"] = (
 SETTINGS.update(
     ("records%d" % n, (("output.timeSeriesInterval", n, "pp"),))
     for n in (5, 10, 20, 25, 40))
+# Forward Euler for the positions instead of Adams-Bashforth (part euler,
+# coupling positionScheme)
+SETTINGS["euler"] = (("coupling.positionScheme", "euler", "pp"),)
 # GAMG for U as a part (layerMean+relaxU0.99+gamg)
 SETTINGS["gamg"] = GAMG_U
 # The Anderson history dropped when the residual grows, or kept (parts

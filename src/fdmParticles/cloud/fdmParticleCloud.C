@@ -236,6 +236,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     solveTolerance_(1e-6),
     maxCourant_(1),
     consistentOverlaps_(false),
+    positionScheme_(fdm::positionScheme::adamsBashforth2),
     box_(point::zero, point::one, FixedList<bool, 3>(false)),
     domainVolume_(gSum(mesh.V())),
     solved_(false),

@@ -168,7 +168,10 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
     contacts_->update
     (
         state_.position, state_.radius, box_, near_,
-        fdm::positionStep::after(historyDeltaT_, mesh_.time().deltaTValue()),
+        fdm::positionStep::after
+        (
+            positionScheme_, historyDeltaT_, mesh_.time().deltaTValue()
+        ),
         state_.Uold
     );
     if (verbose_)
@@ -223,7 +226,10 @@ void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
     // The sheared images of the new time (Lees-Edwards): a particle
     // wrapped across the sheared faces takes the flow's velocity there
     fdm::setLeesEdwardsShear(mesh_, box_);
-    const fdm::positionStep step(fdm::positionStep::after(historyDeltaT_, deltaT));
+    const fdm::positionStep step
+    (
+        fdm::positionStep::after(positionScheme_, historyDeltaT_, deltaT)
+    );
     forAll(state_.position, p)
     {
         const point x =

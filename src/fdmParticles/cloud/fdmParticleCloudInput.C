@@ -55,7 +55,7 @@ void Foam::fdmParticleCloud::readCoupling()
             "lambdaTolerance", "lambdaToleranceFirstStep",
             "lambdaToleranceBetweenRecords",
             "particleSolveTolerance", "alphaLambdaFactor", "overlaps",
-            "maxParticleCourant"
+            "maxParticleCourant", "positionScheme"
         },
         "coupling block"
     );
@@ -63,6 +63,19 @@ void Foam::fdmParticleCloud::readCoupling()
     const word overlaps(c.getOrDefault<word>("overlaps", "thesis"));
     fdm::checkChoice(c, "overlaps", overlaps, {"thesis", "consistent"});
     consistentOverlaps_ = (overlaps == "consistent");
+
+    const word scheme
+    (
+        c.getOrDefault<word>("positionScheme", "adamsBashforth2")
+    );
+    fdm::checkChoice
+    (
+        c, "positionScheme", scheme, {"adamsBashforth2", "euler"}
+    );
+    positionScheme_ =
+        scheme == "euler"
+      ? fdm::positionScheme::euler
+      : fdm::positionScheme::adamsBashforth2;
 
     fdm::lambdaTolerances& t = lambdaTolerances_;
     t.recorded = c.get<scalar>("lambdaTolerance");

@@ -20,7 +20,7 @@ cost per unit strain is the solve time of the Timing lines (core-seconds
 when each run has a core to itself: --jobs no more than the cores).
 
     run.py --snapshot CASE:T [--dts 1e-3,2e-3,4e-3,8e-3] [--window 0.24]
-           [--jobs 2]
+           [--jobs 2] [--name NAME] [--out DIR]
 
 A run DT:SETTING uses a named solver setting (validation/benchmarks/
 solverSettings.py, as frozenCouette: NAME[+PART...][@TOL]) instead of
@@ -80,6 +80,19 @@ def record_at(case, time):
         if not len(hit):
             return None
         return np.array(f["position"][hit[-1]]), np.array(f["radius"])
+
+
+def velocity_alternation(case):
+    """The odd-even part of the particle velocities over the records (one
+    per step): rms over particles and steps of |U(n+1) - 2 U(n) + U(n-1)|/4
+    in gammaDot a1, the amplitude of a velocity that flips from step to
+    step; a smooth trajectory gives dt^2 |U''|/4."""
+    import h5py
+    with h5py.File(os.path.join(case, "postProcessing", "particles.h5"),
+                   "r") as f:
+        U = np.array(f["velocity"])
+    second = U[2:] - 2 * U[1:-1] + U[:-2]
+    return float(np.sqrt(np.mean(np.sum(second ** 2, axis=-1)))) / 4
 
 
 def stopped(case):
@@ -161,6 +174,7 @@ def measure(case, start, end, window):
             "means": {k: means[k] for k in MEANS},
             "consistency": np.sqrt((consistency ** 2).mean(axis=1)),
             "belowFloor": len(re.findall(r"below the barrier floor", text)),
+            "alternation": velocity_alternation(case),
             "coreSecondsPerStrain": sum(last[3:9]) / window,
             "outerPerStep": last[0] / last[1],
             "positions": record_at(case, end)}
@@ -197,7 +211,7 @@ def compare(run, ref):
     return row
 
 
-def write_report(results, dts, window, snapshot, time, failures):
+def write_report(results, dts, window, snapshot, time, failures, path):
     lines = [
         "# Time step against rheology: the sheared Couette suspension",
         "",
@@ -206,23 +220,25 @@ def write_report(results, dts, window, snapshot, time, failures):
         "against the smallest "
         "step, interpolated to each run's times (rms / max over the "
         "window); final positions in a1.  Cost from the Timing lines, %s "
-        "(%d cores), %s." % (os.path.basename(snapshot), time, window,
+        "(%d cores), %s.  Velocity alternation: the odd-even part of the "
+        "particle velocities from step to step, rms in gammaDot a1 "
+        "(velocity_alternation)." % (os.path.basename(snapshot), time, window,
                              WALL_LAYER,
                              os.uname().nodename, os.cpu_count(),
                              date.today().isoformat()),
         "",
         "| gammaDot dt | core-s per strain | outer per step | steps with "
-        "gaps below the contact floor | " +
+        "gaps below the contact floor | velocity alternation | " +
         " | ".join("%s mean, rms diff, max diff" % n for n in QUANTITIES) +
         " | positions rms, max |",
-        "|---" * (5 + len(QUANTITIES)) + "|",
+        "|---" * (6 + len(QUANTITIES)) + "|",
     ]
     for dt in dts:
         r = results[dt]
         cells = ["%.3g, %.1e, %.1e" % r[n] for n in QUANTITIES]
-        lines.append("| %s | %.0f | %.1f | %d | %s | %.1e, %.1e |" % (
+        lines.append("| %s | %.0f | %.1f | %d | %.1e | %s | %.1e, %.1e |" % (
             dt, r["coreSecondsPerStrain"], r["outerPerStep"], r["belowFloor"],
-            " | ".join(cells), *r["position"]))
+            r["alternation"], " | ".join(cells), *r["position"]))
     lines += [
         "",
         "Window means over the whole window (standard error from 5 block "
@@ -257,13 +273,12 @@ def write_report(results, dts, window, snapshot, time, failures):
             "the contact floor, %d particle solves not converged; %s" % (
                 dt, f["time"], f["outerPerStep"], f["belowFloor"],
                 f["notConverged"], f["error"]))
-    path = os.path.join(HERE, "report_window%g.md" % window)
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
     print("wrote", path)
 
 
-def plot(runs, dts, window):
+def plot(runs, dts, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -276,7 +291,7 @@ def plot(runs, dts, window):
         ax.set_title(name)
     axes[0].legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(HERE, "timeStep_window%g.png" % window),
+    fig.savefig(path,
                 dpi=110)
 
 
@@ -288,7 +303,12 @@ def main():
     ap.add_argument("--dts", default="1e-3,2e-3,4e-3,8e-3")
     ap.add_argument("--window", type=float, default=0.24)
     ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--name", help="report_NAME.md, timeStep_NAME.png "
+                    "(default window<W>)")
+    ap.add_argument("--out", default=HERE, help="folder of the report and "
+                    "plot (default this benchmark's)")
     args = ap.parse_args()
+    name = args.name or "window%g" % args.window
     dts = sorted(args.dts.split(","),
                  key=lambda r: (float(parse_run(r)[0]), r))
     for dt in dts:
@@ -312,9 +332,11 @@ def main():
         results[dt] = compare(runs[dt], runs[dts[0]])
         results[dt].update((k, runs[dt][k]) for k in (
             "coreSecondsPerStrain", "outerPerStep", "belowFloor", "means",
+            "alternation",
             "consistency"))
-    write_report(results, dts, args.window, snap, time, failures)
-    plot(runs, dts, args.window)
+    write_report(results, dts, args.window, snap, time, failures,
+                 os.path.join(args.out, "report_%s.md" % name))
+    plot(runs, dts, os.path.join(args.out, "timeStep_%s.png" % name))
 
 
 if __name__ == "__main__":

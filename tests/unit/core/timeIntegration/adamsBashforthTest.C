@@ -91,3 +91,55 @@ TEST(adamsBashforth, variableStepExactForVelocityLinearInTime)
     // No history: forward Euler
     EXPECT_EQ(fdm::positionStep::after(0, 0.1).previous, 0);
 }
+
+
+TEST(adamsBashforth, schemeSelection)
+{
+    // Euler ignores the history; Adams-Bashforth takes it when there is one
+    using fdm::positionScheme;
+    const fdm::positionStep e =
+        fdm::positionStep::after(positionScheme::euler, 0.1, 0.1);
+    EXPECT_EQ(e.current, 1);
+    EXPECT_EQ(e.previous, 0);
+    const fdm::positionStep ab =
+        fdm::positionStep::after(positionScheme::adamsBashforth2, 0.1, 0.1);
+    EXPECT_DOUBLE_EQ(ab.current, 1.5);
+    EXPECT_DOUBLE_EQ(ab.previous, -0.5);
+    EXPECT_EQ
+    (
+        fdm::positionStep::after(positionScheme::adamsBashforth2, 0, 0.1)
+       .previous,
+        0
+    );
+}
+
+
+TEST(adamsBashforth, stiffRelaxationStableWithEulerOnly)
+{
+    // dx/dt = -k x at k dt = 1.5: Euler's factor 1 - k dt = -0.5 decays;
+    // the two-step form's roots of z^2 - (1 - 1.5 k dt) z - 0.5 k dt = 0
+    // are 0.5 and -1.5 (the header's stability ranges k dt < 2 and < 1),
+    // so its x alternates in sign and grows
+    const scalar k = 15, dt = 0.1;
+    scalar xEuler = 1, xAB = 1, UOld = 0, historyDt = 0;
+    scalar previousAB = xAB;
+    for (label n = 0; n < 20; ++n)
+    {
+        const fdm::positionStep e =
+            fdm::positionStep::after(fdm::positionScheme::euler, 0, dt);
+        xEuler += e.dt*(e.current*(-k*xEuler));
+
+        const fdm::positionStep ab = fdm::positionStep::after
+        (
+            fdm::positionScheme::adamsBashforth2, historyDt, dt
+        );
+        const scalar U = -k*xAB;
+        previousAB = xAB;
+        xAB += ab.dt*(ab.current*U + ab.previous*UOld);
+        UOld = U;
+        historyDt = dt;
+    }
+    EXPECT_LT(std::abs(xEuler), 1e-5);
+    EXPECT_GT(std::abs(xAB), 1e3);
+    EXPECT_LT(xAB*previousAB, 0);
+}
