@@ -29,6 +29,17 @@ def wall_layer(ly):
     return 5.0 if ly >= 20 else ly / 4
 
 
+# The strain the averages of a finished point start at (the transient of
+# the thesis' runs); a run shorter than three times that averages from a
+# third of it and is still in its transient
+STEADY_START = 5.0
+
+
+def averaging_start(strain):
+    """Where runPoint's averages start for a run that reached strain."""
+    return STEADY_START if strain >= 3 * STEADY_START else strain / 3
+
+
 def point_row(case, strain, start, box, rheology):
     """One row of the reduced data: a case name, the strain reached, the
     strain the averages start at, the box edges and a core_rheology dict."""
@@ -104,9 +115,11 @@ def fit_sweep(rows):
     beta, n with their standard errors and covariances, None where there
     are fewer than three points.  The closure is fitted against
     phi_core/phi_J of the fitted phi_J.  A point without an error bar (a
-    run too short for block errors) is left out."""
+    run too short for block errors) or one still in its transient (a run
+    shorter than three times STEADY_START) is left out."""
     rows = [r for r in rows
-            if np.isfinite(r["etaCoreErr"]) and r["etaCoreErr"] > 0]
+            if np.isfinite(r["etaCoreErr"]) and r["etaCoreErr"] > 0
+            and r["strain"] >= 3 * STEADY_START]
     phi = np.array([r["phiCore"] for r in rows])
     mp = fit_maron_pierce(phi, [r["etaCore"] for r in rows],
                           [r["etaCoreErr"] for r in rows])

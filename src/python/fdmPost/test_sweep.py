@@ -102,6 +102,18 @@ class UnfinishedPoint(unittest.TestCase):
         fit = sweep.fit_sweep(rows + [short])
         self.assertAlmostEqual(fit["phiJ"], 0.59, delta=1e-6)
 
+    def test_a_point_in_its_transient_is_left_out(self):
+        # Strain 6, averaged from 2 with block errors: shown, not fitted
+        rows = [sweep.point_row(f"phi{p}", 60.0, 5.0, (10, 20, 10),
+                                rheology(p, maron_pierce(p))) for p in PHI]
+        young = sweep.point_row("young", 6.0, sweep.averaging_start(6.0),
+                                (10, 25, 10), rheology(0.55, 100.0))
+        self.assertEqual(young["start"], 2.0)
+        self.assertTrue(young["etaCoreErr"] > 0)
+        fit = sweep.fit_sweep(rows + [young])
+        self.assertAlmostEqual(fit["phiJ"], 0.59, delta=1e-6)
+        self.assertEqual(fit["points"], len(PHI))
+
 
 if __name__ == "__main__":
     unittest.main()

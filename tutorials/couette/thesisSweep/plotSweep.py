@@ -22,7 +22,7 @@ have the case; merges the points into the reduced data results/sweep.csv
 results/sweepFit.json and results/sweep.png.  --from-results redraws from
 results/sweep.csv alone.  Wall layer 5 a1 for Ly >= 20, else Ly/4 (as
 runPoint); averages from strain 5, or from a third of a run shorter than
-15.
+15, which is drawn but not fitted (still in its transient).
 """
 
 import argparse
@@ -49,8 +49,8 @@ def rows_from_runs(folders, start_at):
     for name, records in checkpoint.records_by_case(
             folders, "phi*", sweep.wall_layer).items():
         strain = records.strain()
-        start = start_at if start_at is not None else (
-            5.0 if strain >= 15 else strain / 3)
+        start = start_at if start_at is not None else \
+            sweep.averaging_start(strain)
         rows.append(sweep.point_row(
             name, strain, start, records.meta["box"],
             core_rheology(records, start / records.meta["shearRate"])))
@@ -97,10 +97,19 @@ def draw(rows, fit, path):
                label="Morris & Boulay 1999")
     ax[0].plot(x * 0.585, boyer_friction(x * 0.585)[1], "k-.",
                label="Boyer et al. 2011")
-    ax[0].errorbar([r["phiCore"] for r in rows], [r["etaCore"] for r in rows],
-                   xerr=[r["phiCoreErr"] for r in rows],
-                   yerr=[r["etaCoreErr"] for r in rows], fmt="o", color="C3",
-                   label="fdmSuspensionFoam (core)")
+    for young in (False, True):
+        some = [r for r in rows
+                if (r["strain"] < 3 * sweep.STEADY_START) == young]
+        if some:
+            ax[0].errorbar(
+                [r["phiCore"] for r in some], [r["etaCore"] for r in some],
+                # a run too short for block errors has none
+                xerr=np.nan_to_num([r["phiCoreErr"] for r in some]),
+                yerr=np.nan_to_num([r["etaCoreErr"] for r in some]),
+                fmt="o", color="C3",
+                mfc="none" if young else "C3",
+                label="still in its transient, not fitted" if young
+                else "fdmSuspensionFoam (core)")
     ax[0].set(yscale="log", xlabel=r"$\phi_{core}$", ylabel=r"$\eta_{core}$",
               xlim=(0.2, 0.6))
     eta_mb, n1_mb, n2_mb = morris_boulay(x * 0.68)

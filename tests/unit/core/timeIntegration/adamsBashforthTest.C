@@ -118,7 +118,7 @@ TEST(adamsBashforth, stiffRelaxationStableWithEulerOnly)
 {
     // dx/dt = -k x at k dt = 1.5: Euler's factor 1 - k dt = -0.5 decays;
     // the two-step form's roots of z^2 - (1 - 1.5 k dt) z - 0.5 k dt = 0
-    // are 0.5 and -1.5 (the header's stability ranges k dt < 2 and < 1),
+    // are 0.44 and -1.69 (the header's stability ranges k dt < 2 and < 1),
     // so its x alternates in sign and grows
     const scalar k = 15, dt = 0.1;
     scalar xEuler = 1, xAB = 1, UOld = 0, historyDt = 0;
