@@ -40,6 +40,11 @@ def averaging_start(strain):
     return STEADY_START if strain >= 3 * STEADY_START else strain / 3
 
 
+def in_transient(row):
+    """Whether a point's run is shorter than three times STEADY_START."""
+    return row["strain"] < 3 * STEADY_START
+
+
 def point_row(case, strain, start, box, rheology):
     """One row of the reduced data: a case name, the strain reached, the
     strain the averages start at, the box edges and a core_rheology dict."""
@@ -119,7 +124,7 @@ def fit_sweep(rows):
     shorter than three times STEADY_START) is left out."""
     rows = [r for r in rows
             if np.isfinite(r["etaCoreErr"]) and r["etaCoreErr"] > 0
-            and r["strain"] >= 3 * STEADY_START]
+            and not in_transient(r)]
     phi = np.array([r["phiCore"] for r in rows])
     mp = fit_maron_pierce(phi, [r["etaCore"] for r in rows],
                           [r["etaCoreErr"] for r in rows])

@@ -98,8 +98,7 @@ def draw(rows, fit, path):
     ax[0].plot(x * 0.585, boyer_friction(x * 0.585)[1], "k-.",
                label="Boyer et al. 2011")
     for young in (False, True):
-        some = [r for r in rows
-                if (r["strain"] < 3 * sweep.STEADY_START) == young]
+        some = [r for r in rows if sweep.in_transient(r) == young]
         if some:
             ax[0].errorbar(
                 [r["phiCore"] for r in some], [r["etaCore"] for r in some],
