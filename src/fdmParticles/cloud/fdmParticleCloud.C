@@ -319,6 +319,9 @@ Foam::fdmParticleCloud::fdmParticleCloud
         },
         state_.radius
     );
+    pairInteractions_.setSize(2);
+    pairInteractions_.set(0, &subGrid_());
+    pairInteractions_.set(1, &contacts_());
 
     output_.reset
     (
@@ -329,33 +332,6 @@ Foam::fdmParticleCloud::fdmParticleCloud
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
-
-Foam::label Foam::fdmParticleCloud::nContacts() const
-{
-    return contacts_->nContacts();
-}
-
-
-Foam::scalar Foam::fdmParticleCloud::smallestGap() const
-{
-    if (empty())
-    {
-        return 2;
-    }
-    const scalar a1 = min(state_.radius);
-    return
-        fdm::smallestSurfaceGap
-        (
-            box_, state_.position, state_.radius, smallestGapReach(), near_
-        )/a1;
-}
-
-
-Foam::scalar Foam::fdmParticleCloud::smallestGapReach() const
-{
-    return 2*min(state_.radius);
-}
-
 
 Foam::scalar Foam::fdmParticleCloud::lambdaTolerance() const
 {

@@ -12,7 +12,6 @@ Description
 #include "adamsBashforth.H"
 #include "clockTime.H"
 #include "sumOverRanks.H"
-#include "pairSearch.H"
 #include "leesEdwardsShear.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -38,34 +37,6 @@ void Foam::fdmParticleCloud::buildStencils()
     fdm::sumOverRanks(moments_);
 
     timings_.indicators += clock.elapsedTime();
-}
-
-
-Foam::scalar Foam::fdmParticleCloud::supportOverlapReach() const
-{
-    if (!consistentOverlaps_)
-    {
-        return 0;
-    }
-    const scalar a = max(state_.radius);
-    return 2*(indicator_.supportRadius(a) - a);
-}
-
-
-void Foam::fdmParticleCloud::findOverlapBlocks()
-{
-    if (!consistentOverlaps_)
-    {
-        return;
-    }
-    fdm::selectNearPairs
-    (
-        box_, state_.position, state_.radius, supportOverlapReach(), near_,
-        overlapPairs_
-    );
-    overlapBlocks_ =
-        stencils_.overlapBlocks(mesh_.V(), alphaLambda_, overlapPairs_);
-    fdm::sumOverRanks(overlapBlocks_);
 }
 
 
@@ -112,8 +83,10 @@ Foam::scalar Foam::fdmParticleCloud::assembleSystem
     (
         overlapPairs_, overlapBlocks_, system_
     );
-    subGrid_->addTo(system_, nu_);
-    contacts_->addTo(system_, 1/rhoFluid_);
+    for (const pairInteraction& pi : pairInteractions_)
+    {
+        pi.addTo(system_, fdm::fluidProperties{rhoFluid_, nu_});
+    }
     return Foam::sqrt(flowLoads2);
 }
 
@@ -149,41 +122,14 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
     }
 
     buildStencils();
+    updatePairs();
 
-    // One neighbour search per step serves the sub-grid pairs, the
-    // contacts and the smallest gap of the progress line
-    const scalar reach = max
-    (
-        max(subGrid_->pairReach(state_.radius), smallestGapReach()),
-        max(contacts_->pairReach(), supportOverlapReach())
-    );
-    fdm::findNearPairs(box_, state_.position, state_.radius, reach, near_);
-    findOverlapBlocks();
-
-    subGrid_->update(state_.position, state_.radius, box_, near_);
-    if (verbose_)
-    {
-        subGrid_->report();
-    }
-    contacts_->update
-    (
-        state_.position, state_.radius, box_, near_,
-        fdm::positionStep::after
-        (
-            positionScheme_, historyDeltaT_, mesh_.time().deltaTValue()
-        ),
-        state_.Uold
-    );
-    if (verbose_)
-    {
-        contacts_->report();
-    }
     // Explicit loads for the coming solve; a solved state read at a
     // restart keeps the loads it was written with, and its contacts are
     // linearised about the gaps its velocities predict, as they were
     if (solved_)
     {
-        contacts_->relinearise(state_.U);
+        relinearisePairs();
     }
     else
     {
@@ -222,7 +168,10 @@ void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
             << abort(FatalError);
     }
 
-    contacts_->advance(state_.U, state_.Omega, deltaT);
+    for (pairInteraction& pi : pairInteractions_)
+    {
+        pi.advance(state_.U, state_.Omega, deltaT);
+    }
     // The sheared images of the new time (Lees-Edwards): a particle
     // wrapped across the sheared faces takes the flow's velocity there
     fdm::setLeesEdwardsShear(mesh_, box_);
@@ -299,7 +248,7 @@ Foam::scalar Foam::fdmParticleCloud::correct
     // as the contact model does: particleContacts twice a step)
     if (solved_)
     {
-        contacts_->relinearise(state_.U);
+        relinearisePairs();
         contact_ = contacts_->loads();
     }
     const scalar residualScale = assembleSystem(sums);
@@ -382,16 +331,20 @@ void Foam::fdmParticleCloud::finishSolve
         dipoleTrace_[n] = tr(D);
     }
 
-    // Hydrodynamic totals: FDM + sub-grid (eqs 2.9, 2.68)
-    subGrid_->addHydrodynamics
-    (
-        state_.U, state_.Omega, rhoFluid_*nu_, hydro_, dipoleTrace_
-    );
-
-    // Contact loads: explicit part and the implicit stiffness' share at the
-    // solved velocities
+    // Hydrodynamic totals: FDM + sub-grid (eqs 2.9, 2.68); contact loads:
+    // the explicit part and the implicit stiffness' share at the solved
+    // velocities
     contact_ = contacts_->loads();
-    contacts_->addImplicitLoads(state_.U, state_.Omega, contact_);
+    for (const pairInteraction& pi : pairInteractions_)
+    {
+        const bool hydro =
+            pi.share() == pairInteraction::loadShare::hydrodynamic;
+        pi.addSolvedLoads
+        (
+            state_.U, state_.Omega, fdm::fluidProperties{rhoFluid_, nu_},
+            hydro ? hydro_ : contact_, dipoleTrace_
+        );
+    }
 
     firstSolveDone_ = true;
 }

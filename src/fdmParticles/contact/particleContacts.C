@@ -135,16 +135,10 @@ Foam::particleContacts::particleContacts
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::particleContacts::update
-(
-    const pointField& positions,
-    const scalarField& radii,
-    const fdm::periodicBox& box,
-    const UList<labelPair>& near,
-    const fdm::positionStep& step,
-    const List<vector>& Uold
-)
+void Foam::particleContacts::update(const fdm::pairStepInput& in)
 {
+    const scalarField& radii = in.radii;
+    const fdm::positionStep& step = in.step;
     step_ = step;
     relinearisations_ = 0;
     contacts_.clear();
@@ -161,7 +155,7 @@ void Foam::particleContacts::update
 
     forEachContact
     (
-        positions, radii, box, near,
+        in.positions, radii, in.box, in.near,
         [&](const key& k, const fdm::contactGeometry& g, const scalar armI,
             const scalar armJ, const label wall, const vector& imageU)
         {
@@ -182,7 +176,7 @@ void Foam::particleContacts::update
                     // the step (none for a first, forward-Euler step)
                     step.previous == 0
                   ? 0
-                  : step.dt*step.previous*spring.approach(Uold),
+                  : step.dt*step.previous*spring.approach(in.Uold),
                     g.gap,
                     spring,
                     Zero,
@@ -271,21 +265,23 @@ void Foam::particleContacts::advance
 void Foam::particleContacts::addTo
 (
     fdm::particleVelocitySystem& system,
-    const scalar scale
+    const fdm::fluidProperties& fluid
 ) const
 {
     for (const contactEntry& e : contacts_)
     {
-        e.spring.addTo(system, scale);
+        e.spring.addTo(system, 1/fluid.rho);
     }
 }
 
 
-void Foam::particleContacts::addImplicitLoads
+void Foam::particleContacts::addSolvedLoads
 (
     const List<vector>& U,
     const List<vector>& Omega,
-    fdm::particleLoads& loads
+    const fdm::fluidProperties&,
+    fdm::particleLoads& loads,
+    List<scalar>&
 ) const
 {
     for (const contactEntry& e : contacts_)

@@ -19,6 +19,9 @@ namespace
 
 const scalar hr = 5e-3, kn = 1e4, gapFloor = 1e-5;
 
+//- A fluid of unit density: the stiffnesses enter the system unscaled
+const fdm::fluidProperties unitDensity{1, 1};
+
 //- Eq 2.57 with the floor gap gapFloor a (a = 1)
 scalar elasticForce(const scalar gap)
 {
@@ -74,7 +77,7 @@ struct contactCase
         DynamicList<labelPair> near;
         const scalarField radii(2, 1.0);
         fdm::findNearPairs(box, x, radii, m.pairReach(), near);
-        m.update(x, radii, box, near, s, Uold);
+        m.update({x, radii, box, near, s, Uold});
         List<vector> Omega(2, Zero);
         bool converged = true;
         for (label outer = 0; outer < 8; ++outer)
@@ -93,7 +96,7 @@ struct contactCase
             (
                 1, vector(-P, 0, 0) + m.loads().force[1], m.loads().torque[1]
             );
-            m.addTo(system, 1);
+            m.addTo(system, unitDensity);
             converged =
                 system.solve(1e-12, 200, U, Omega, 0).converged && converged;
         }
@@ -112,11 +115,8 @@ struct contactCase
         const scalarField radii(x.size(), 1.0);
         DynamicList<labelPair> near;
         fdm::findNearPairs(box, x, radii, m.pairReach(), near);
-        m.update
-        (
-            x, radii, box, near, fdm::positionStep::euler(1e-3),
-            List<vector>(x.size(), Zero)
-        );
+        const fdm::positionStep euler(fdm::positionStep::euler(1e-3));
+        m.update({x, radii, box, near, euler, List<vector>(x.size(), Zero)});
     }
 };
 
@@ -265,11 +265,9 @@ TEST(particleContacts, pairBelowTheFloorIsAsStiffAsAHundredthOfHrAboveIt)
         DynamicList<labelPair> near;
         fdm::findNearPairs(cc.box, x, scalarField(2, 1.0), m->pairReach(),
             near);
-        m->update
-        (
-            x, scalarField(2, 1.0), cc.box, near, fdm::positionStep::euler(dt),
-            List<vector>(2, Zero)
-        );
+        const scalarField radii(2, 1.0);
+        const fdm::positionStep euler(fdm::positionStep::euler(dt));
+        m->update({x, radii, cc.box, near, euler, List<vector>(2, Zero)});
         fdm::particleVelocitySystem system(2);
         for (direction d = 0; d < 6; ++d)
         {
@@ -277,7 +275,7 @@ TEST(particleContacts, pairBelowTheFloorIsAsStiffAsAHundredthOfHrAboveIt)
             system.prescribe(0, d, 0);
         }
         system.addRhs(1, vector(-1, 0, 0), Zero);
-        m->addTo(system, 1);
+        m->addTo(system, unitDensity);
         List<vector> U(2, Zero), Omega(2, Zero);
         system.solve(1e-12, 100, U, Omega, 0);
         return -U[1].x();

@@ -217,7 +217,8 @@ Foam::frameInvariantSubGrid::frameInvariantSubGrid
 :
     subGridModel(mesh),
     pairCutoff_(0),
-    wallCutoff_(0)
+    wallCutoff_(0),
+    aLarge_(radii.empty() ? 0 : max(radii))
 {
     fdm::checkKeywords
     (
@@ -241,30 +242,24 @@ Foam::frameInvariantSubGrid::frameInvariantSubGrid
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-Foam::scalar Foam::frameInvariantSubGrid::pairReach
-(
-    const scalarField& radii
-) const
+Foam::scalar Foam::frameInvariantSubGrid::pairReach() const
 {
-    return pairCutoff_*max(radii);
+    return pairCutoff_*aLarge_;
 }
 
 
-void Foam::frameInvariantSubGrid::update
-(
-    const pointField& positions,
-    const scalarField& radii,
-    const fdm::periodicBox& box,
-    const UList<labelPair>& near
-)
+void Foam::frameInvariantSubGrid::update(const fdm::pairStepInput& in)
 {
+    const pointField& positions = in.positions;
+    const scalarField& radii = in.radii;
+    const fdm::periodicBox& box = in.box;
     pairs_.clear();
     wallGaps_.clear();
 
     // Pairs: xi = 2r/(a_p + a_q) - 2 below the largest cut-off, i.e. a
     // surface gap below pairCutoff (a_p + a_q)/2 <= pairCutoff a_max
     DynamicList<labelPair> close;
-    fdm::selectNearPairs(box, positions, radii, pairReach(radii), near, close);
+    fdm::selectNearPairs(box, positions, radii, pairReach(), in.near, close);
     for (const labelPair& pq : close)
     {
         // "1" is the smaller particle, lambda = a_2/a_1 >= 1
@@ -338,9 +333,10 @@ void Foam::frameInvariantSubGrid::updateWallGaps
 void Foam::frameInvariantSubGrid::addTo
 (
     fdm::particleVelocitySystem& system,
-    const scalar nu
+    const fdm::fluidProperties& fluid
 ) const
 {
+    const scalar nu = fluid.nu;
     for (const pairEntry& e : pairs_)
     {
         e.matrix.addTo(system, e.p, e.q, nu, e.qImageVelocity);
@@ -352,15 +348,16 @@ void Foam::frameInvariantSubGrid::addTo
 }
 
 
-void Foam::frameInvariantSubGrid::addHydrodynamics
+void Foam::frameInvariantSubGrid::addSolvedLoads
 (
     const List<vector>& U,
     const List<vector>& Omega,
-    const scalar eta,
+    const fdm::fluidProperties& fluid,
     fdm::particleLoads& loads,
     List<scalar>& dipoleTrace
 ) const
 {
+    const scalar eta = fluid.rho*fluid.nu;
     // F^h = F^FDM + F^SG etc. (eqs 2.9, 2.68)
     for (const pairEntry& e : pairs_)
     {

@@ -31,7 +31,7 @@ Foam::noSubGrid::noSubGrid
     const scalarField&
 )
 :
-    subGridModel(mesh)
+    noPairInteraction<subGridModel>(mesh)
 {
     fdm::checkKeywords(dict, {"model"}, "subGrid block, model none");
 }

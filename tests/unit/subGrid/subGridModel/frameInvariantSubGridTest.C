@@ -61,7 +61,7 @@ fdm::particleLoads loadsOf
 {
     fdm::particleLoads loads(U.size());
     List<scalar> trace(U.size(), 0.0);
-    m.addHydrodynamics(U, Omega, 1.0, loads, trace);
+    m.addSolvedLoads(U, Omega, fdm::fluidProperties{1, 1}, loads, trace);
     return loads;
 }
 
@@ -74,8 +74,9 @@ void update
 {
     const scalarField radii(x.size(), 1.0);
     DynamicList<labelPair> near;
-    fdm::findNearPairs(box, x, radii, m.pairReach(radii), near);
-    m.update(x, radii, box, near);
+    fdm::findNearPairs(box, x, radii, m.pairReach(), near);
+    const fdm::positionStep euler(fdm::positionStep::euler(1e-3));
+    m.update({x, radii, box, near, euler, List<vector>(x.size(), Zero)});
 }
 
 const fdm::periodicBox periodic10
