@@ -265,7 +265,7 @@ _KU, _KOM = _node_k()
 
 
 def sangani_stresslet(eps):
-    """Sangani et al. (2011) fit (thesis eq. 4.9, seed1-validation.md l. 80-84).
+    """Sangani et al. (2011) fit (thesis 1, eq. 4.9).
 
     S_xy/((10/3) pi eta a^3 gdot), Y = 1 + eps:
       1/[1 - 15/(16Y^3) + 1/Y^5 - 0.65/Y^7]                         0 < 1/Y <= 0.85

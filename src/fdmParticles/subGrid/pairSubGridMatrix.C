@@ -17,7 +17,7 @@ Foam::fdm::pairSubGridMatrix::expand
     const scalar r
 )
 {
-    // Relations of thesis section 3.3.3 (seed notes 8.5.2).  Index 0 is
+    // Relations of thesis section 3.3.3.  Index 0 is
     // particle 1, index 1 particle 2: f.XA[1][0] = X_21^A.
     resistanceFunctions f;
     const scalar r2 = r*r;
@@ -64,7 +64,7 @@ Foam::fdm::pairSubGridMatrix::expand
     f.YG[1][1] = b.YG11 + 0.5*r*b.YA21;
 
     // G~ (force rows, E columns); the X lines are printed without tildes
-    // in 3.3.3 (seed notes section 12, item 21)
+    // in 3.3.3 (pairSubGridMatrix.H: the reading of the relations)
     f.XGt[0][0] = b.XG11;
     f.XGt[0][1] = -b.XG11 - r*b.XA21;
     f.XGt[1][0] = -b.XG11;
@@ -74,7 +74,7 @@ Foam::fdm::pairSubGridMatrix::expand
     f.YGt[1][0] = -b.YG11;
     f.YGt[1][1] = b.YG11 + 0.5*r*b.YA21;
 
-    // H (stresslet rows, Omega columns); base Y_21^H (item 19)
+    // H (stresslet rows, Omega columns); base Y_21^H
     f.YH[0][0] = -b.YH21 - 0.5*r2*b.YA21 + 0.5*r*b.YB21;
     f.YH[0][1] = b.YH21 + 0.5*r2*b.YA21 + r*b.YG11 - 0.5*r*b.YB21;
     f.YH[1][0] = b.YH21;

@@ -84,7 +84,9 @@ def morris_boulay(phi, component=2, phim=0.68):
 
 
 def lambda33(phi):
-    """lambda_33(phi) of article 3 (eq 8, reading F.2-13)."""
+    """lambda_33(phi) of article 3 (eq 8; eq 10 prints eta_33 without the
+    exponents 7.5 and 6, and eta_33 = lambda_33 eta_22 is the reading that
+    gives lambda_33 = 0.2 at phi = 0.25 as the article states)."""
     q = np.asarray(phi, float) / PHI_RCP
     return q**7.5 / (1e-3 + q**6)
 

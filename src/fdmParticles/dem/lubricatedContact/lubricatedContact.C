@@ -161,7 +161,8 @@ Foam::scalar Foam::fdm::lubricatedContact::normalStep
             break;
         }
 
-        // Eq 20 (sign of F.2-2): the time at which u reaches eps
+        // Eq 20, numerator u*- - eps (printed the other way round, which
+        // makes t_c negative for an approaching pair): when u reaches eps
         const scalar tc = (u - eps)/(eps*(eps - un));
         if (!(tc > 0 && tc < remaining))
         {

@@ -49,7 +49,7 @@ Foam::fdm::lubricatedContact fromDictionary(const Foam::dictionary& dict)
         readBoundedOrDefault
         (
             dict, "tangentialStiffness", 0.5, VSMALL, GREAT,
-            "k_t/g; not given by the thesis (F.2-12), default 0.5"
+            "k_t/g; not given by the thesis, default 0.5"
         ),
         readBounded
         (
