@@ -48,6 +48,8 @@ Foam::scalar Foam::fdmParticleCloud::assembleSystem
     // Particle system (eqs 2.43-2.44, smoothed form 2.53), per unit fluid
     // density
     system_.clear();
+    // The contacts' explicit loads, linearised about the latest velocities
+    const fdm::particleLoads& contact = contacts_->loads();
     scalar flowLoads2 = 0;
     forAll(state_.position, p)
     {
@@ -61,8 +63,8 @@ Foam::scalar Foam::fdmParticleCloud::assembleSystem
         system_.addRhs
         (
             p,
-            force + contact_.force[p]/rhoFluid_,
-            torque + contact_.torque[p]/rhoFluid_
+            force + contact.force[p]/rhoFluid_,
+            torque + contact.torque[p]/rhoFluid_
         );
         for (direction d = 0; d < 3; ++d)
         {
@@ -124,16 +126,12 @@ void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
     buildStencils();
     updatePairs();
 
-    // Explicit loads for the coming solve; a solved state read at a
-    // restart keeps the loads it was written with, and its contacts are
-    // linearised about the gaps its velocities predict, as they were
+    // A solved state read at a restart keeps the loads it was written
+    // with, and its contacts are linearised about the gaps its velocities
+    // predict, as they were
     if (solved_)
     {
         relinearisePairs();
-    }
-    else
-    {
-        contact_ = contacts_->loads();
     }
 
     // lambda is not advected (thesis 2.4, step 2): keep it where a support
@@ -249,7 +247,6 @@ Foam::scalar Foam::fdmParticleCloud::correct
     if (solved_)
     {
         relinearisePairs();
-        contact_ = contacts_->loads();
     }
     const scalar residualScale = assembleSystem(sums);
     lastSolve_ = system_.solve
