@@ -23,6 +23,19 @@ HEADER = (["case", "strain", "start", "records", "Lx", "Ly", "Lz"]
           + [f"{q}{s}" for q in QUANTITIES for s in ("", "Err")])
 
 
+# Thesis 1, Table 4.7: phi0 -> (phi_core, gammaDot_core/gammaDot_0) in the
+# thesis' boxes (L_x = L_y = 20 a1, 25 a1 above phi0 0.45; L_z = 20 a1)
+TABLE_4_7 = {0.27: (0.303, 0.923), 0.32: (0.359, 0.885), 0.37: (0.405, 0.873),
+             0.42: (0.458, 0.773), 0.47: (0.493, 0.745), 0.52: (0.543, 0.563),
+             0.54: (0.570, 0.391)}
+
+
+def phi0_of(case):
+    """The nominal fraction phi0 of a runPoint case name (phi0.42_10x20x10,
+    phi0.42_20x20, phi0.42_10x20x10_G4: 0.42)."""
+    return float(case[len("phi"):].split("_")[0])
+
+
 def wall_layer(ly):
     """The wall layer runPoint leaves out of the core: the thesis' 5 a1
     from a wall separation of 20 a1 on, a quarter of it below."""

@@ -38,6 +38,14 @@ class ReducedData(unittest.TestCase):
                 self.assertAlmostEqual(a[k] / b[k], 1, delta=1e-5, msg=k)
 
 
+class CaseNames(unittest.TestCase):
+    def test_phi0_of_every_runpoint_name(self):
+        for name in ("phi0.42_10x20x10", "phi0.42_20x20",
+                     "phi0.52_10x25x10_Delta0.25", "phi0.37_10x20x10_G4"):
+            self.assertEqual(sweep.phi0_of(name), float(name[3:7]))
+        self.assertEqual(sorted(sweep.TABLE_4_7)[0], 0.27)
+
+
 class MaronPierceFit(unittest.TestCase):
     def test_exact_points_give_the_parameters(self):
         eta = maron_pierce(PHI, 0.9, 0.61)

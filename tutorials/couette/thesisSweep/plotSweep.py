@@ -83,6 +83,19 @@ def print_table(rows, fit):
           f" +- {fit['nErr']:.2f}")
 
 
+def print_core_against_table_4_7(rows):
+    """phi_core and gammaDot_core/gammaDot_0 next to the thesis' Table 4.7
+    (its boxes): the wall layers' depletion and slip."""
+    print(f"{'case':>18} {'phi_core':>13} {'Table 4.7':>9}"
+          f" {'gdot_core/gdot_0':>16} {'Table 4.7':>9}")
+    for r in rows:
+        phi, rate = sweep.TABLE_4_7.get(sweep.phi0_of(r["case"]),
+                                        (np.nan, np.nan))
+        print(f"{r['case']:>18} {r['phiCore']:7.3f}+-{r['phiCoreErr']:.3f}"
+              f" {phi:9.3f} {r['gammaDotCore']:10.3f}+-"
+              f"{r['gammaDotCoreErr']:.3f} {rate:9.3f}")
+
+
 def draw(rows, fit, path):
     phi_r = np.array([r["phiCore"] for r in rows]) / THESIS_PHI_J
     x = np.linspace(0.3, 0.98, 200)
@@ -175,6 +188,7 @@ def main():
         print(f"wrote {table}")
     fit = sweep.fit_sweep(rows)
     print_table(rows, fit)
+    print_core_against_table_4_7(rows)
     if fit is not None:
         with open(f"{here}/results/sweepFit.json", "w") as f:
             json.dump(fit, f, indent=1)
