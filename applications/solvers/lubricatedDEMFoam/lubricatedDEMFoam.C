@@ -82,14 +82,9 @@ Description
 
 #include "argList.H"
 #include "Time.H"
-#include "clockTime.H"
 #include "lubricatedDEM.H"
 #include "demSetup.H"
-#include "demState.H"
-#include "demSeries.H"
-#include "demParticleSeries.H"
-#include "demVTK.H"
-#include "demMonitor.H"
+#include "demRunOutput.H"
 #include "checkTimeControls.H"
 #include "incompleteWrites.H"
 #include "readableDictionaries.H"
@@ -111,69 +106,22 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     fdm::checkTimeControls(runTime);
 
-    const autoPtr<IOdictionary> propertiesPtr
-    (
-        fdm::readDEMProperties(runTime)
-    );
-    const IOdictionary& properties = propertiesPtr();
-
-    fdm::lubricatedDEM dem = fdm::createDEM(properties, runTime);
+    const autoPtr<IOdictionary> properties(fdm::readDEMProperties(runTime));
+    fdm::lubricatedDEM dem = fdm::createDEM(properties(), runTime);
     const scalar dt = runTime.deltaTValue();
     fdm::checkTimeStep(dem, dt, runTime);
 
-    const dictionary output(properties.subOrEmptyDict("output"));
-    const label outputInterval = fdm::demSeries::readInterval(output);
-    fdm::demTracks tracks(runTime, dem, output);
-    fdm::demSeries series(runTime, dem);
-    fdm::demParticleSeries particleSeries(runTime, properties);
-    fdm::demVTK vtk(runTime, output);
-    fdm::demMonitor monitor;
-    vtk.write(dem, runTime, 0);
+    fdm::demRunOutput output(runTime, dem, properties());
 
     Info<< nl << "Starting time loop" << nl << endl;
-
-    clockTime clock;
-    const scalar startTime = runTime.value();
-    label stepCount = 0;
-    scalar sMax = 0;
-    scalar lastReport = -GREAT;
 
     while (runTime.run())
     {
         ++runTime;
         dem.step(dt);
-        ++stepCount;
-        sMax = max(sMax, dem.stabilityNumber());
-
-        monitor.check(dem, runTime);
-
-        if (stepCount % outputInterval == 0)
-        {
-            series.append(dem);
-            particleSeries.append(dem);
-            tracks.append(dem);
-        }
-        // A progress line every 10 s of wall time and at the end
-        const bool last = fdm::lastStepOfRun(runTime);
-        if (clock.elapsedTime() >= lastReport + 10 || last)
-        {
-            lastReport = clock.elapsedTime();
-            monitor.report(dem, runTime, clock, startTime, sMax);
-            sMax = 0;
-        }
-
-        vtk.write(dem, runTime, stepCount);
-        if (runTime.writeTime() || last)
-        {
-            fdm::writeDEMState(dem, runTime);
-            particleSeries.commit();
-        }
+        output.afterStep(dem, runTime);
     }
-
-    Info<< nl << "End: " << stepCount << " steps, "
-        << clock.elapsedTime() << " s, "
-        << stepCount*dem.size()/max(clock.elapsedTime(), SMALL)
-        << " particle-steps/s" << nl << endl;
+    output.end(dem);
 
     return 0;
 }

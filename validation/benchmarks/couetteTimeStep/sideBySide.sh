@@ -15,8 +15,8 @@
 #
 #   ./sideBySide.sh COMMIT NEWRUN [STRAIN [SNAPSHOT:T [N...]]]
 #
-# COMMIT: e.g. f09ef70 (the last before issue 30), built once in
-# build/sideBySide/COMMIT (a git worktree sharing ThirdParty/).  NEWRUN: a
+# COMMIT: e.g. f09ef70 (the last before issue 30), built once by
+# etc/buildCommit (a git worktree in build/sideBySide/COMMIT).  NEWRUN: a
 # run case of run.py whose system/fvSolution, system/fvSchemes and
 # constant/particleProperties give the new setting.  SNAPSHOT:T: a case
 # and its written time to start from (default the couetteTimeStep
@@ -35,15 +35,8 @@ t0=${start##*:}
 composeAt=
 [ $# -gt 4 ] && composeAt="${*:5}"
 work=$FDM_PROJECT_DIR/build/sideBySide
-old=$work/$commit
 [ -d "$snapshot/$t0" ] || { echo "no snapshot $snapshot/$t0 (couetteTimeStep: run ./Allrun first)"; exit 1; }
-if [ ! -x "$old/platforms/linux64GccDPInt32Opt/bin/fdmSuspensionFoam" ]
-then
-    mkdir -p "$work"
-    git -C "$FDM_PROJECT_DIR" worktree add -f "$old" "$commit" > /dev/null || exit 1
-    ln -sfn "$FDM_PROJECT_DIR/ThirdParty" "$old/ThirdParty"
-    (cd "$old" && ./Allwmake > "$work/log.Allwmake.$commit" 2>&1) || exit 1
-fi
+old=$("$FDM_PROJECT_DIR/etc/buildCommit" "$commit" fdmSuspensionFoam) || exit 1
 
 # Old: the snapshot with the Couette tutorial's solver and coupling
 # settings of that commit, as its users ran it
