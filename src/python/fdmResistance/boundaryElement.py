@@ -209,10 +209,15 @@ def _oseen_sum(r, w):
             + np.einsum("...q,...qi,...qj->...ij", inv / d ** 2, r, r))
 
 
-def single_layer(surfaces, near_factor=3.0, chunk=256):
-    """Matrix (3N, 3N) of int_e G(x_m - y) dS(y) (element e, collocation
-    point m), element-ordered over `surfaces`; also centres and areas."""
-    xs = np.vstack([s.centres() for s in surfaces])
+def single_layer(surfaces, near_factor=3.0, chunk=256, targets=None,
+                 out=None):
+    """Matrix (3M, 3N) of int_e G(x_m - y) dS(y) (element e of `surfaces`,
+    element-ordered, and collocation point x_m: the elements' own centres,
+    M = N, or the points `targets`); also the elements' centres and
+    areas.  The self term (own centres only) uses the Duffy rule.  out: a
+    (3M, 3N) array (a block of a larger one) to write it into."""
+    xe = np.vstack([s.centres() for s in surfaces])
+    xs = xe if targets is None else np.asarray(targets, float)
     far = [s.map(_Q3) for s in surfaces]
     near = [s.map(_QNEAR) for s in surfaces]
     self_ = [s.map(_QSELF) for s in surfaces]
@@ -224,26 +229,30 @@ def single_layer(surfaces, near_factor=3.0, chunk=256):
     wn = np.vstack([n[1] for n in near])
     ys = np.vstack([s[0] for s in self_])
     ws = np.vstack([s[1] for s in self_])
-    n = len(xs)
-    A = np.empty((n, 3, n, 3))
+    n, ne = len(xs), len(xe)
+    if out is None:
+        out = np.empty((3 * n, 3 * ne))
+    A = out.reshape(n, 3, ne, 3)
+    if not np.shares_memory(A, out):
+        raise ValueError("single_layer: out must reshape without a copy")
     for m0 in range(0, n, chunk):
         m = slice(m0, min(n, m0 + chunk))
         blk = _oseen_sum(xs[m, None, None, :] - yq[None], wq[None])
         A[m] = blk.transpose(0, 2, 1, 3)               # (m, i, e, j)
     # near pairs and self terms
-    dist = np.linalg.norm(xs[:, None, :] - xs[None, :, :], axis=-1)
-    mi, ei = np.nonzero(dist < near_factor * size[None, :])
-    for k0 in range(0, len(mi), 4096):
-        k = slice(k0, k0 + 4096)
-        m, e = mi[k], ei[k]
-        selfm = m == e
+    for m0 in range(0, n, chunk):
+        rows = np.arange(m0, min(n, m0 + chunk))
+        dist = np.linalg.norm(xs[rows, None, :] - xe[None, :, :], axis=-1)
+        mi, ei = np.nonzero(dist < near_factor * size[None, :])
+        m, e = rows[mi], ei
+        selfm = (m == e) if targets is None else np.zeros(len(m), bool)
         blk = np.empty((len(m), 3, 3))
         for sel, y, w in ((~selfm, yn, wn), (selfm, ys, ws)):
             if sel.any():
                 blk[sel] = _oseen_sum(xs[m[sel], None, :] - y[e[sel]],
                                       w[e[sel]])
         A[m, :, e, :] = blk
-    return A.reshape(3 * n, 3 * n), xs, areas
+    return out, xe, areas
 
 
 # --------------------------------------------------------------------------
@@ -288,14 +297,17 @@ def _discretise(cs, rs, walls, level, beta, half_width):
     return surfaces
 
 
-def free_spheres(spheres, walls, ambient, level=3, beta=0.5, half_width=None):
-    """Velocities, angular velocities and stresslets of force- and torque-free
-    spheres between plane walls in an ambient flow.
+def free_spheres(spheres, walls, ambient, level=3, beta=0.5, half_width=None,
+                 forces=None):
+    """Velocities, angular velocities and stresslets of torque-free spheres
+    between plane walls (none: unbounded fluid) in an ambient flow, each
+    force-free or under a given external force.
 
     spheres: list of (centre (3,), radius); walls: list of wall heights y;
     ambient(x) -> u_inf (m, 3), a Stokes flow satisfying the wall
-    conditions.  Returns dict U (ns, 3), Omega (ns, 3), S (ns, 3, 3),
-    elements (count)."""
+    conditions; forces: external force on each sphere (ns, 3), balanced by
+    the fluid's, int f dS = -F (default none).  Returns dict U (ns, 3),
+    Omega (ns, 3), S (ns, 3, 3), elements (count)."""
     cs = [np.asarray(c, float) for c, _ in spheres]
     surfaces = _discretise(cs, [r for _, r in spheres], walls, level, beta,
                            half_width)
@@ -311,6 +323,9 @@ def free_spheres(spheres, walls, ambient, level=3, beta=0.5, half_width=None):
     rhs = np.zeros(3 * n + 6 * ns)
     on_sphere = owner >= 0
     rhs[:3 * n] = -(ambient(xs) * on_sphere[:, None]).ravel()
+    if forces is not None:
+        for k, F in enumerate(np.asarray(forces, float)):
+            rhs[3 * n + 6 * k:3 * n + 6 * k + 3] = -F
     for k in range(ns):
         idx = np.nonzero(owner == k)[0]
         rel = xs[idx] - cs[k]
@@ -353,18 +368,24 @@ def poiseuille(H):
                                0 * x[:, 1], 0 * x[:, 1]], 1)
 
 
-def reference(spheres, walls, ambient, level=3, beta=0.5, **kw):
-    """The solution at (level, beta) and at the mesh twice as coarse
+def with_error_estimate(solve, level, beta):
+    """solve(level, beta) at (level, beta) and on the mesh twice as coarse
     (level - 1, 2 beta).  The error falls as h^2, so the fine solution's
     error is about |fine - coarse|/3; returned as "error" (checked against
     the exact single-wall solution in test_boundaryElement.py, where it
     overestimates the true error by up to 2x)."""
-    fine = free_spheres(spheres, walls, ambient, level=level, beta=beta, **kw)
-    coarse = free_spheres(spheres, walls, ambient, level=level - 1,
-                          beta=2 * beta, **kw)
+    fine = solve(level, beta)
+    coarse = solve(level - 1, 2 * beta)
     fine["error"] = {k: np.abs(fine[k] - coarse[k]) / 3
                      for k in ("U", "Omega", "S")}
     return fine
+
+
+def reference(spheres, walls, ambient, level=3, beta=0.5, **kw):
+    """free_spheres with its error estimate (with_error_estimate)."""
+    return with_error_estimate(
+        lambda lev, b: free_spheres(spheres, walls, ambient, level=lev,
+                                    beta=b, **kw), level, beta)
 
 
 def channel_spheres(H, centres, flow, radius=1.0, **kw):

@@ -4,10 +4,6 @@ Run: PYTHONPATH=src/python python3 -m unittest fdmResistance.test_boundaryElemen
 (about 5 s.)
 
 Checks and tolerances (coarse meshes, level 2: 320 sphere elements):
-  unbounded shear: Omega_z = -1/2 (1e-9; exact by the mesh's symmetry),
-      U = 0 (1e-12), S_xy/((10/3) pi eta a^3) = 1 (Einstein/Faxen) within
-      0.5 % (measured +0.34 %; +0.09 % at level 3), S symmetric and
-      traceless (1e-12)
   single wall, eps = 0.2, against the exact free-sphere velocities of
       validation/wallShearSphere/reference.py (Chaoui & Feuillebois 2003,
       Goldman, Cox & Brenner 1967): U_x within 1 %, Omega_z within 1.5 %
