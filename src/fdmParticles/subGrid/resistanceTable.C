@@ -193,19 +193,28 @@ void Foam::fdm::resistanceTable::values
 }
 
 
+void Foam::fdm::resistanceTable::requireKind
+(
+    const tableKind kind,
+    const char* name
+) const
+{
+    if (kind_ != kind)
+    {
+        FatalErrorInFunction
+            << "Resistance table " << name_ << " is not a " << name
+            << " table" << exit(FatalError);
+    }
+}
+
+
 Foam::fdm::pairBaseFunctions Foam::fdm::resistanceTable::pairFunctions
 (
     const scalar xi,
     const scalar a1
 ) const
 {
-    if (kind_ != tableKind::pair)
-    {
-        FatalErrorInFunction
-            << "Resistance table " << name_ << " is not a pair table"
-            << exit(FatalError);
-    }
-
+    requireKind(tableKind::pair, "pair");
     pairBaseFunctions f;
     f.XA21 = value("XA21", xi, a1);
     f.YA21 = value("YA21", xi, a1);
@@ -227,13 +236,7 @@ Foam::fdm::wallBaseFunctions Foam::fdm::resistanceTable::wallFunctions
     const scalar a
 ) const
 {
-    if (kind_ != tableKind::wall)
-    {
-        FatalErrorInFunction
-            << "Resistance table " << name_ << " is not a wall table"
-            << exit(FatalError);
-    }
-
+    requireKind(tableKind::wall, "wall");
     wallBaseFunctions f;
     f.XA = value("XA", epsilon, a);
     f.YA = value("YA", epsilon, a);

@@ -151,6 +151,11 @@ TEST(resistanceTable, readsPairTableAndInterpolates)
     EXPECT_EQ(f.XP12, t.value("XP12", 0.02, 1.5));
     EXPECT_EQ(f.XP21, t.value("XP21", 0.02, 1.5));
     EXPECT_NEAR(f.XP12, 2.25*reference(8, 0.02), 1e-12*mag(f.XP12));
+
+    // A pair table gives no wall functions
+    FatalError.throwExceptions();
+    EXPECT_THROW(t.wallFunctions(0.01, 1), Foam::error);
+    FatalError.dontThrowExceptions();
 }
 
 
