@@ -30,7 +30,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
 from fdmResistance import pairShear, threeSphere  # noqa: E402
-from run import TRIANGLE_SIDES  # noqa: E402
+from run import TRIANGLE_SIDES, boxes, suffix  # noqa: E402
 import bemReference  # noqa: E402
 
 # Targets of u_x(1), u_x(2,3), their difference, u_y, Omega_z (None: shown
@@ -44,11 +44,11 @@ NEAR_FIELD = 3.0
 SHEAR_MEAN, SHEAR_MAX = 0.005, 0.01
 
 
-def load():
+def load(scale=1):
     """dict (kind, config, radius) -> arrays U, W of shape
-    (positions, spheres, 3)."""
+    (positions, spheres, 3), of the runs at a box scale (run.py)."""
     rows = {}
-    for line in open(os.path.join(HERE, "results.dat")):
+    for line in open(os.path.join(HERE, "results%s.dat" % suffix(scale))):
         if line.startswith("#"):
             continue
         w = line.split()
@@ -121,19 +121,21 @@ BEM = (bemReference.load() if os.path.exists(bemReference.REFERENCE)
        else {})
 
 
-def triangle_section(data, kernel, lines):
+def triangle_section(data, kernel, lines, scale=1):
     sides = sorted((k[1] for k in data if k[0] == "triangle"
                     and k[1] != "single"), key=float)
     lines += ["## Triangle, sphere 1 pushed (thesis 4.1.5, Tables 4.2-4.4)",
               "",
               "Units F/(6 pi eta a) (angular: F/(6 pi eta a^2)); mean over "
               "%d positions in a cell, relative standard deviation in "
-              "brackets. FDM box 16 a x 16 a x 12 a (walls y = +-8 a); "
+              "brackets. FDM box %s a (walls y = +-%g a); "
               "'corrected' removes the box velocity of a pushed single "
               "sphere (run.box_kernel). Reference: boundary integral, "
               "unbounded (bemReference.py; +- its mesh uncertainty); SD: "
-              "Stokesian dynamics with exact pairs." % len(
-                  data[("triangle", sides[0], 1.0)][0]), ""]
+              "Stokesian dynamics with exact pairs." % (
+                  len(data[("triangle", sides[0], 1.0)][0]),
+                  " x ".join("%g" % L for L in boxes(scale)[0]),
+                  boxes(scale)[0][1] / 2), ""]
     single = data.get(("triangle", "single", 1.0))
     if kernel is not None and single is not None:
         # sphere 1: the mean over the same cell positions as the clusters
@@ -203,15 +205,15 @@ def triangle_section(data, kernel, lines):
     return results, ok_all
 
 
-def shear_section(data, lines):
+def shear_section(data, lines, scale=1):
     lines += ["## Three free spheres in shear, gaps 0.01 a (thesis 4.1.6, "
               "Tables 4.5-4.6)", "",
               "Units gamma_dot a and gamma_dot; B at the centre of a cube of "
-              "side 12 a; mean over positions in a cell (relative standard "
+              "side %g a; mean over positions in a cell (relative standard "
               "deviation in brackets). Deviation in per cent of the largest "
               "velocity (angular velocity) of the configuration. Reference: "
               "boundary integral, unbounded (+- its mesh uncertainty); SD: "
-              "Stokesian dynamics with exact pairs.", ""]
+              "Stokesian dynamics with exact pairs." % boxes(scale)[1], ""]
     ok_all, results = True, {}
     for config in ("aligned", "L"):
         radii = sorted(k[2] for k in data if k[0] == "shear"
@@ -307,15 +309,77 @@ def plot(tri, shear):
     fig.savefig(os.path.join(HERE, "threeSpheres.png"), dpi=120)
 
 
-def main():
-    data = load()
-    kernel_path = os.path.join(HERE, "boxKernel.dat")
-    kernel = np.loadtxt(kernel_path) if os.path.exists(kernel_path) else None
+def summary(tri, shear):
+    """Largest |deviation|/reference (%) over r of the targeted triangle
+    quantities, and (mean, largest) shear deviations (%) per config and
+    radius."""
+    out = {}
+    for j in (2, 3, 4):
+        devs = [abs(c[j] - r[j]) / abs(r[j]) for _, c, _, r in tri
+                if not np.isnan(r[j])]
+        out[TRI_NAMES[j]] = 100 * max(devs) if devs else np.nan
+    for config, (ref, meas) in shear.items():
+        scale = np.array([np.abs(ref[:, :2]).max()] * 2
+                         + [np.abs(ref[:, 2]).max()])
+        for a, (m, _) in meas.items():
+            dev = np.abs(m - ref) / scale
+            out["%s a = %g" % (config, a)] = (100 * dev.mean(),
+                                              100 * dev.max())
+    return out
+
+
+def box_study():
+    """report_boxes.md: the deviations at every box scale run side by
+    side (the box-size study)."""
+    scales = sorted([1.0] + [float(f[len("results_box"):-4])
+                             for f in os.listdir(HERE)
+                             if f.startswith("results_box")])
+    rows = []
+    for scale in scales:
+        data = load(scale)
+        kernel = load_kernel(scale)
+        tri = (triangle_section(data, kernel, [], scale)[0]
+               if any(k[0] == "triangle" for k in data) else [])
+        shear = shear_section(data, [], scale)[0]
+        positions = "/".join(
+            "%d" % len(next(v for k, v in data.items() if k[0] == kind)[0])
+            if any(k[0] == kind for k in data) else "-"
+            for kind in ("triangle", "shear"))
+        rows.append((scale, positions, summary(tri, shear)))
+    keys = [TRI_NAMES[j] for j in (2, 3, 4)] + sorted(
+        {k for _, _, s in rows for k in s} - set(TRI_NAMES))
+    lines = ["# Three spheres: box-size study", "",
+             "Largest deviation over r (%%) of the triangle quantities, "
+             "mean/largest deviation (%%) of the shear clusters, against "
+             "the boundary-integral reference; triangle box %s a and shear "
+             "cube %g a at scale 1." % (
+                 " x ".join("%g" % L for L in boxes(1)[0]), boxes(1)[1]), "",
+             "| scale | positions (triangle/shear) | " + " | ".join(keys)
+             + " |",
+             "|---|---|" + "---|" * len(keys)]
+    for scale, positions, s in rows:
+        cells = ["-" if k not in s else "%.2f / %.2f" % s[k]
+                 if isinstance(s[k], tuple) else "%.2f" % s[k] for k in keys]
+        lines.append("| %g | %s | %s |" % (scale, positions,
+                                           " | ".join(cells)))
+    with open(os.path.join(HERE, "report_boxes.md"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+
+
+def load_kernel(scale):
+    path = os.path.join(HERE, "boxKernel%s.dat" % suffix(scale))
+    return np.loadtxt(path) if os.path.exists(path) else None
+
+
+def main(scale=1):
+    data = load(scale)
+    kernel = load_kernel(scale)
     lines = ["# Three spheres (thesis 1, sections 4.1.5-4.1.6)", ""]
     tri, ok_tri = ([], True)
     if any(k[0] == "triangle" for k in data):
-        tri, ok_tri = triangle_section(data, kernel, lines)
-    shear, ok_shear = shear_section(data, lines)
+        tri, ok_tri = triangle_section(data, kernel, lines, scale)
+    shear, ok_shear = shear_section(data, lines, scale)
     ok = ok_tri and ok_shear and kernel is not None
     lines += ["Targets (the published code's accuracy): triangle "
               "u_x(1) - u_x(2,3) %g %%, u_y %g %%, Omega_z %g %%; shear mean "
@@ -323,11 +387,20 @@ def main():
                   100 * t for t in TRI_TARGETS[2:] + (SHEAR_MEAN, SHEAR_MAX)),
               "",
               "Result: %s" % ("PASS" if ok else "FAIL")]
-    with open(os.path.join(HERE, "report.md"), "w") as f:
+    name = "report%s.md" % suffix(scale)
+    with open(os.path.join(HERE, name), "w") as f:
         f.write("\n".join(lines) + "\n")
-    plot(tri, shear)
+    if scale == 1:
+        plot(tri, shear)
     print("\n".join(lines))
 
 
 if __name__ == "__main__":
-    main()
+    if sys.argv[1:] == ["--boxes"]:
+        box_study()
+    elif sys.argv[1:2] == ["--box-scale"]:
+        main(float(sys.argv[2]))
+    elif sys.argv[1:]:
+        sys.exit("usage: report.py [--box-scale S | --boxes]")
+    else:
+        main()

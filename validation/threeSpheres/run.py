@@ -34,9 +34,12 @@ Stokesian dynamics with the exact two-sphere resistance functions
 (fdmResistance.threeSphere), unbounded fluid.
 
     ./Allrun [--positions 2] [--jobs 2] [--only triangle|shear] [--radii 1]
+             [--box-scale S]
 
 writes results.dat here (cases in build/validation/threeSpheres) and
-calls report.py.
+calls report.py.  --box-scale S multiplies both boxes by S (a multiple
+of 0.05: whole cells of a/5) for the box-size study: results_boxS.dat and
+boxKernel_boxS.dat (report.py --boxes tabulates the sizes side by side).
 """
 
 import argparse
@@ -73,25 +76,36 @@ def make_case(case, box, uw, force, particles):
         "@LAMBDATOL@": "1e-6", "@PARTICLES@": particles})
 
 
-def solve(kind, param, radius, offset, work):
+def suffix(scale):
+    """File-name suffix of a box scale ('' for the default boxes)."""
+    return "" if scale == 1 else "_box%g" % scale
+
+
+def boxes(scale):
+    """The triangle box and the shear cube's side (in radii) at a scale."""
+    return tuple(scale * L for L in TRIANGLE_BOX), scale * SHEAR_BOX
+
+
+def solve(kind, param, radius, offset, work, scale=1):
     """One steady solve; returns (positions relative to the cluster
     reference point, velocities, angular velocities), the ambient
     velocity of the offset removed (units of a1 = 1)."""
     if kind == "triangle":
         x = (np.zeros((1, 3)) if param == "single"
              else cluster("triangle", param))
-        box, uw, force = TRIANGLE_BOX, 0.0, (6 * np.pi, 0.0, 0.0)
+        box, uw, force = boxes(scale)[0], 0.0, (6 * np.pi, 0.0, 0.0)
     else:
         x = cluster(param, 2.0 + SHEAR_GAP) * radius
-        box = (SHEAR_BOX * radius,) * 3
+        box = (boxes(scale)[1] * radius,) * 3
         uw, force = box[1] / 2, (0.0, 0.0, 0.0)
     centre = np.asarray(offset) * DELTA + 0.013      # off the mesh nodes
     groups = ["pushed" if kind == "triangle" and i == 0 else "free"
               for i in range(len(x))]
     lines = "\n".join("    (%s %s %.17g)" % (g, vec(p + centre), radius)
                       for g, p in zip(groups, x))
-    case = os.path.join(work, "%s_%s_a%g_%s" % (
-        kind, param, radius, "_".join("%g" % o for o in offset)))
+    case = os.path.join(work, "%s_%s_a%g_%s%s" % (
+        kind, param, radius, "_".join("%g" % o for o in offset),
+        suffix(scale)))
     make_case(case, box, uw, force, lines)
     s = run_case(case)
     U = s["velocity"].copy()
@@ -100,7 +114,7 @@ def solve(kind, param, radius, offset, work):
     return x, U, s["angularVelocity"]
 
 
-def box_kernel(work):
+def box_kernel(work, scale=1):
     """Box correction of the triangle runs: sphere 1 alone, pushed, at the
     cluster's place; returns K (see kernel_from_field): the velocity added by the box
     (walls, images and the net flow a net force drives along a periodic
@@ -108,8 +122,8 @@ def box_kernel(work):
     spheres 2 and 3 relative to it for each side r (fluid velocity after
     one step minus the exact field of a translating sphere), see
     kernel_from_field (sphere 3 by symmetry y -> -y)."""
-    case = os.path.join(work, "boxKernel")
-    make_case(case, TRIANGLE_BOX, 0.0, (6 * np.pi, 0, 0),
+    case = os.path.join(work, "boxKernel" + suffix(scale))
+    make_case(case, boxes(scale)[0], 0.0, (6 * np.pi, 0, 0),
               "    (pushed %s 1)" % vec([0.013, 0.013, 0.013]))
     control = os.path.join(case, "system", "controlDict")
     text = open(control).read()
@@ -117,17 +131,16 @@ def box_kernel(work):
     text = text.replace("writeFormat     binary;", "writeFormat     ascii;")
     open(control, "w").write(text)
     s = run_case(case)
-    return kernel_from_field(case, s["position"][0])
+    return kernel_from_field(case, s["position"][0], boxes(scale)[0])
 
 
-def kernel_from_field(case, x1):
+def kernel_from_field(case, x1, box=TRIANGLE_BOX):
     """Rows [sphere 1, sphere 2's place for each side r] of (K_x, K_y, K_z,
     Omega_z): box velocity and box rotation rate (half the curl, central
     differences over one cell) at those places, from the field run of
     box_kernel with sphere 1 at x1."""
     from fdmPost.foamFields import read_internal_field
     from fdmPost.caseRunner import read_last_record
-    box = TRIANGLE_BOX
     n = [int(round(L / DELTA)) for L in box]
     U = read_internal_field(os.path.join(case, "0.001", "U")).reshape(
         n[2], n[1], n[0], 3)
@@ -179,7 +192,12 @@ def main():
     parser.add_argument("--only", choices=("triangle", "shear"))
     parser.add_argument("--radii", default="1",
                         help="sphere radii of the shear runs, e.g. 1,1.4")
+    parser.add_argument("--box-scale", type=float, default=1.0,
+                        help="both boxes times this (a multiple of 0.05)")
     args = parser.parse_args()
+    scale = args.box_scale
+    if abs(20 * scale - round(20 * scale)) > 1e-9:
+        parser.error("--box-scale %g: not a multiple of 0.05" % scale)
     work = os.path.join(os.environ["FDM_PROJECT_DIR"], "build", "validation",
                         "threeSpheres")
     offsets = [tuple(o) for o in cell_offsets(args.positions, 3)]
@@ -190,7 +208,7 @@ def main():
     if args.only != "triangle":
         jobs += [("shear", p, float(a), o) for a in args.radii.split(",")
                  for p in ("aligned", "L") for o in offsets]
-    out = os.path.join(HERE, "results.dat")
+    out = os.path.join(HERE, "results%s.dat" % suffix(scale))
     done = set()
     if os.path.exists(out):                     # resume: keep what is there
         for line in open(out):
@@ -206,7 +224,7 @@ def main():
     todo = [j for j in jobs if (j[0], str(j[1]), j[2], j[3]) not in done]
     print("%d of %d solves to do" % (len(todo), len(jobs)), flush=True)
     with concurrent.futures.ProcessPoolExecutor(args.jobs) as pool:
-        futures = {pool.submit(solve, *j, work): j for j in todo}
+        futures = {pool.submit(solve, *j, work, scale): j for j in todo}
         for i, fut in enumerate(concurrent.futures.as_completed(futures)):
             kind, param, radius, o = futures[fut]
             x, U, W = fut.result()
@@ -219,15 +237,15 @@ def main():
                         " ".join("%.10g" % c for c in W[k])))
             print("  [%d/%d] %s %s a=%g" % (i + 1, len(todo), kind, param,
                                             radius), flush=True)
-    kernel = os.path.join(HERE, "boxKernel.dat")
+    kernel = os.path.join(HERE, "boxKernel%s.dat" % suffix(scale))
     if args.only != "shear" and not os.path.exists(kernel):
-        K = box_kernel(work)
+        K = box_kernel(work, scale)
         np.savetxt(kernel, K, header="box correction of the triangle runs "
                    "(run.box_kernel): K_x K_y K_z Omega_z; row 0 sphere 1, "
                    "then sphere 2's place for r = "
                    + " ".join("%g" % s for s in TRIANGLE_SIDES))
     import report
-    report.main()
+    report.main(scale)
 
 
 if __name__ == "__main__":
