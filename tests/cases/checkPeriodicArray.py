@@ -29,10 +29,8 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
                                 "python"))
-sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "validation",
-                                "periodicArrayDrag"))
-from dragFactor import drag_factor  # noqa: E402
-from fdmPost.particleCase import hasimoto_K, momentum_balance  # noqa: E402
+from fdmPost.particleCase import (drag_factor, hasimoto_K,  # noqa: E402
+                                  momentum_balance)
 from fdmPost.checks import Checks  # noqa: E402
 
 work = sys.argv[1]

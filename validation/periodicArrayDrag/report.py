@@ -13,9 +13,9 @@ import sys
 
 import numpy as np
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from dragFactor import drag_factor  # noqa: E402
-from fdmPost.particleCase import hasimoto_K  # noqa: E402,I100
+sys.path.insert(0, os.path.join(os.environ["FDM_PROJECT_DIR"], "src",
+                                "python"))
+from fdmPost.particleCase import drag_factor, hasimoto_K  # noqa: E402
 from fdmPost.report import write_markdown  # noqa: E402
 
 # Published FDM values (Orsi 2022, Table 4.1): L/a -> (K, sigma_K, error %)

@@ -3,6 +3,7 @@
 particleState  <case>/<time>/particleState (OpenFOAM dictionary, written
                by fdmParticleCloud::writeState)
 balance        postProcessing/momentumBalance/<t0>/momentumBalance.dat
+drag factor    of the periodic arrays (drag_factor, hasimoto_K)
 """
 
 import glob
@@ -99,6 +100,25 @@ def momentum_balance(case):
     for i, n in enumerate(names):
         out[n] = data[:, 1 + 3 * i:4 + 3 * i]
     return out
+
+
+def drag_factor(case, L):
+    """Drag factor K = F/(6 pi eta a U_s) of a periodic-array case's last
+    solve (thesis 1, eqs 4.2, 4.6, 4.7): F = V0 |grad P0| (held sphere) or
+    the buoyant weight (settling sphere), both L^3 in these cases, and
+    U_s = <u> - U_particle along the flow.  The mean velocity from the
+    momentum-balance file, the particle's from the HDF5 series (both
+    written after every solve)."""
+    import h5py
+    bal = momentum_balance(case)
+    with h5py.File(os.path.join(case, "postProcessing", "particles.h5"),
+                   "r") as f:
+        t, Up = f["time"][-1], f["velocity"][-1, 0]
+    if abs(t - bal["time"][-1]) > 1e-12 * (1 + abs(t)):
+        raise RuntimeError("%s: last HDF5 time %g differs from the last"
+                           " balance time %g" % (case, t, bal["time"][-1]))
+    slip = bal["meanU"][-1, 0] - Up[0]
+    return L ** 3 / (6 * np.pi * abs(slip))
 
 
 def hasimoto_K(phi):
