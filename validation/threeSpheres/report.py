@@ -44,9 +44,10 @@ NEAR_FIELD = 3.0
 SHEAR_MEAN, SHEAR_MAX = 0.005, 0.01
 
 
-def load(scale=1):
+def load(scale=1, positions=None):
     """dict (kind, config, radius) -> arrays U, W of shape
-    (positions, spheres, 3), of the runs at a box scale (run.py)."""
+    (positions, spheres, 3), of the runs at a box scale (run.py); only
+    those positions (offset tuples) when given."""
     rows = {}
     for line in open(os.path.join(HERE, "results%s.dat" % suffix(scale))):
         if line.startswith("#"):
@@ -54,6 +55,8 @@ def load(scale=1):
         w = line.split()
         key = (w[0], w[1], float(w[2]))
         pos = tuple(map(float, w[3:6]))
+        if positions is not None and pos not in positions:
+            continue
         rows.setdefault(key, {}).setdefault(pos, {})[int(w[6])] = (
             np.array(w[10:13], float), np.array(w[13:16], float))
     out = {}
@@ -317,7 +320,8 @@ def summary(tri, shear):
     for j in (2, 3, 4):
         devs = [abs(c[j] - r[j]) / abs(r[j]) for _, c, _, r in tri
                 if not np.isnan(r[j])]
-        out[TRI_NAMES[j]] = 100 * max(devs) if devs else np.nan
+        if devs:
+            out[TRI_NAMES[j]] = 100 * max(devs)
     for config, (ref, meas) in shear.items():
         scale = np.array([np.abs(ref[:, :2]).max()] * 2
                          + [np.abs(ref[:, 2]).max()])
@@ -328,15 +332,24 @@ def summary(tri, shear):
     return out
 
 
+def positions_run(scale):
+    """The cell positions (offset tuples) in a results file."""
+    return {tuple(map(float, line.split()[3:6]))
+            for line in open(os.path.join(HERE, "results%s.dat" %
+                                          suffix(scale)))
+            if not line.startswith("#")}
+
+
 def box_study():
     """report_boxes.md: the deviations at every box scale run side by
-    side (the box-size study)."""
+    side (the box-size study), at the positions that every scale ran."""
     scales = sorted([1.0] + [float(f[len("results_box"):-4])
                              for f in os.listdir(HERE)
                              if f.startswith("results_box")])
+    common = set.intersection(*(positions_run(s) for s in scales))
     rows = []
     for scale in scales:
-        data = load(scale)
+        data = load(scale, common)
         kernel = load_kernel(scale)
         tri = (triangle_section(data, kernel, [], scale)[0]
                if any(k[0] == "triangle" for k in data) else [])
@@ -352,8 +365,10 @@ def box_study():
              "Largest deviation over r (%%) of the triangle quantities, "
              "mean/largest deviation (%%) of the shear clusters, against "
              "the boundary-integral reference; triangle box %s a and shear "
-             "cube %g a at scale 1." % (
-                 " x ".join("%g" % L for L in boxes(1)[0]), boxes(1)[1]), "",
+             "cube %g a at scale 1; cell positions %s (those every scale "
+             "ran)." % (" x ".join("%g" % L for L in boxes(1)[0]),
+                        boxes(1)[1], ", ".join(str(p) for p in
+                                               sorted(common))), "",
              "| scale | positions (triangle/shear) | " + " | ".join(keys)
              + " |",
              "|---|---|" + "---|" * len(keys)]

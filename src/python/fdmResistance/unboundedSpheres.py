@@ -26,8 +26,9 @@ components the symmetry allows, and its force and torque sum the images:
 F = sum_h h F_kept, T = sum_h det(h) h T_kept over the maps h that take
 the sphere onto itself (its stabiliser).
 
-Units: eta = 1.  Checked in test_unboundedSpheres.py against the solve
-without mirrors and the exact two-sphere mobility.
+Units: eta = 1.  Checked in test_unboundedSpheres.py against Stokes' law,
+the exact two-sphere mobility, Einstein's stresslet, and the same mesh
+solved with one symmetry against two (1e-9).
 """
 
 import itertools
