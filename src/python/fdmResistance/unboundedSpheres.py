@@ -1,5 +1,5 @@
 """Boundary-integral reference for rigid spheres in unbounded Stokes flow,
-pushed or free in a simple shear, using the mirror planes they share.
+pushed or free in a simple shear, using the symmetries they share.
 
 Why: the three-sphere validations of thesis 1 (sections 4.1.5-4.1.6: a
 triangle with one sphere pushed, three free spheres in shear, aligned and
@@ -77,7 +77,7 @@ def symmetry_group(generators):
 
 
 def _images(cs, rs, group):
-    """images[k][h]: the sphere that mirror h maps sphere k onto."""
+    """images[k][h]: the sphere that map h of the group takes sphere k to."""
     images = []
     for c, r in zip(cs, rs):
         row = []
@@ -86,8 +86,8 @@ def _images(cs, rs, group):
                  for c2, r2 in zip(cs, rs)]
             j = int(np.argmin(d))
             if d[j] > 1e-9:
-                raise ValueError("the spheres are not symmetric about the "
-                                 "mirror planes")
+                raise ValueError("the spheres are not symmetric under the "
+                                 "given maps")
             row.append(j)
         images.append(row)
     return images
@@ -118,7 +118,7 @@ def _half_mesh(k, cs, rs, stab, level, beta):
 
 def _rigid_rows(M, idx, rel, areas, col, stab):
     """No-slip columns and force/torque rows of one kept sphere; stab: the
-    mirrors that map it onto itself.  Returns the indices of its rigid
+    maps that take it onto itself.  Returns the indices of its rigid
     unknowns that the symmetry fixes at zero."""
     sF = np.sum(stab, axis=0)
     sT = np.sum([np.prod(g) * g for g in stab], axis=0)
@@ -135,8 +135,8 @@ def _rigid_rows(M, idx, rel, areas, col, stab):
 
 def _mirrored_layer(M, surfaces, group, chunk=1024):
     """-1/(8 pi) sum_h int G(x - h y) h f(y) dS(y) over the kept elements,
-    into the top-left block of M, the mirrored images a row block at a
-    time (no second matrix)."""
+    into the top-left block of M, the images a row block at a time (no
+    second matrix)."""
     n = sum(len(s.tri) for s in surfaces)
     block = M[:3 * n, :3 * n]
     _, xs, areas = single_layer(surfaces, out=block)
