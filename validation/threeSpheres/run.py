@@ -29,9 +29,10 @@ shear     Three free spheres A, B, C in the shear plane of a plane Couette
 
 Each configuration is one steady solve at the initial positions (endTime
 0: the first record of particles.h5), averaged over positions of the
-cluster inside one mesh cell (cell_offsets).  Reference (report.py):
-Stokesian dynamics with the exact two-sphere resistance functions
-(fdmResistance.threeSphere), unbounded fluid.
+cluster inside one mesh cell (cell_offsets).  Reference (report.py): the
+boundary integral in unbounded fluid (bemReference.py, reference.dat),
+with Stokesian dynamics with the exact two-sphere resistance functions
+(fdmResistance.threeSphere) beside it.
 
     ./Allrun [--positions 2] [--jobs 2] [--only triangle|shear] [--radii 1]
              [--box-scale S]
