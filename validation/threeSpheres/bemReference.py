@@ -64,15 +64,18 @@ def cases():
            NEAR)
 
 
-def done():
-    """(kind, config, level, beta) already in reference.dat."""
-    out = set()
+def rows():
+    """The data rows of reference.dat, split (none before the first
+    solve)."""
     if os.path.exists(REFERENCE):
         for line in open(REFERENCE):
             if not line.startswith("#"):
-                w = line.split()
-                out.add((w[0], w[1], int(w[2]), float(w[3])))
-    return out
+                yield line.split()
+
+
+def done():
+    """(kind, config, level, beta) already in reference.dat."""
+    return {(w[0], w[1], int(w[2]), float(w[3])) for w in rows()}
 
 
 def append(kind, config, level, beta, r, seconds):
@@ -97,13 +100,10 @@ def load():
     (level, beta, elements, seconds, U (3, 3), W (3, 3))."""
     order = {(kind, config): list(meshes)
              for kind, config, *_, meshes in cases()}
-    rows = {}
-    for line in open(REFERENCE):
-        if line.startswith("#"):
-            continue
-        w = line.split()
+    found = {}
+    for w in rows():
         key, mesh = (w[0], w[1]), (int(w[2]), float(w[3]))
-        entry = rows.setdefault(key, {}).setdefault(
+        entry = found.setdefault(key, {}).setdefault(
             mesh, [int(w[4]), float(w[5]), np.zeros((3, 3)),
                    np.zeros((3, 3))])
         k = int(w[6])
@@ -111,7 +111,7 @@ def load():
         entry[3][k] = np.array(w[10:13], float)
     return {key: [(m[0], m[1], *by_mesh[m]) for m in order.get(key, [])
                   if m in by_mesh]
-            for key, by_mesh in rows.items()}
+            for key, by_mesh in found.items()}
 
 
 def main():

@@ -10,7 +10,8 @@ import os
 import numpy as np
 
 from report import (HERE, TRI_NAMES, boxes, load, load_kernel,
-                    shear_section, suffix, triangle_section)
+                    shear_deviation, shear_section, suffix,
+                    triangle_section)
 
 
 def summary(tri, shear):
@@ -24,10 +25,8 @@ def summary(tri, shear):
         if devs:
             out[TRI_NAMES[j]] = 100 * max(devs)
     for config, (ref, meas) in shear.items():
-        scale = np.array([np.abs(ref[:, :2]).max()] * 2
-                         + [np.abs(ref[:, 2]).max()])
         for a, (m, _) in meas.items():
-            dev = np.abs(m - ref) / scale
+            dev = np.abs(shear_deviation(ref, m))
             out["%s a = %g" % (config, a)] = (100 * dev.mean(),
                                               100 * dev.max())
     return out

@@ -83,17 +83,34 @@ TRI_NAMES = ("u_x(1)", "u_x(2,3)", "u_x(1) - u_x(2,3)", "u_y(2) = -u_y(3)",
              "Omega_z(2) = -Omega_z(3)")
 
 
+def triangle_row(U, W):
+    """The five triangle quantities of one solution (3 spheres)."""
+    return triangle_quantities(U[None], W[None])[:, 0]
+
+
+def shear_rows(U, W):
+    """U_x, U_y, Omega_z of spheres A, B, C (rows) of one solution."""
+    return np.hstack([U[:, :2], W[:, 2:]])
+
+
+def shear_deviation(ref, measured):
+    """|measured - ref| of a shear cluster relative to its largest velocity
+    (U_x, U_y columns) and angular velocity (Omega_z column)."""
+    scale = np.array([np.abs(ref[:, :2]).max()] * 2
+                     + [np.abs(ref[:, 2]).max()])
+    return (measured - ref) / scale
+
+
 def triangle_sd(side):
     """Stokesian dynamics with exact pairs: the five triangle quantities."""
     x = threeSphere.cluster("triangle", side)
-    U, W = threeSphere.velocities(x, forces=bemReference.PUSH)
-    return triangle_quantities(U[None], W[None])[:, 0]
+    return triangle_row(*threeSphere.velocities(x, forces=bemReference.PUSH))
 
 
 def shear_sd(config):
     x = threeSphere.cluster(config, 2.01)
-    U, W = threeSphere.velocities(x, E=pairShear.E_INF, W=pairShear.W_INF)
-    return np.hstack([U[:, :2], W[:, 2:]])          # rows A, B, C
+    return shear_rows(*threeSphere.velocities(x, E=pairShear.E_INF,
+                                              W=pairShear.W_INF))
 
 
 def bem(kind, config, quantities):
@@ -111,17 +128,14 @@ def bem(kind, config, quantities):
 
 
 def triangle_reference(side):
-    return bem("triangle", "%.2f" % side,
-               lambda U, W: triangle_quantities(U[None], W[None])[:, 0])
+    return bem("triangle", "%.2f" % side, triangle_row)
 
 
 def shear_reference(config):
-    return bem("shear", config, lambda U, W: np.hstack([U[:, :2],
-                                                        W[:, 2:]]))
+    return bem("shear", config, shear_rows)
 
 
-BEM = (bemReference.load() if os.path.exists(bemReference.REFERENCE)
-       else {})
+BEM = bemReference.load()
 
 
 def triangle_section(data, kernel, lines, scale=1):
@@ -226,8 +240,6 @@ def shear_section(data, lines, scale=1):
         found = shear_reference(config)
         sd = shear_sd(config)
         ref, unc = (found[0], found[1]) if found else (sd, np.zeros((3, 3)))
-        scale = np.array([np.abs(ref[:, :2]).max()] * 2
-                         + [np.abs(ref[:, 2]).max()])
         head = "| %s | reference | SD |" % config + "".join(
             " FDM a = %g | deviation |" % a for a in radii)
         lines += ["Reference: %s." % (found[2] if found else
@@ -246,11 +258,11 @@ def shear_section(data, lines, scale=1):
                     m, s = meas[a]
                     row += " %+.4f (%.1f %%) | %+.1f %% |" % (
                         m[i, j], 100 * s[i, j] / max(abs(m[i, j]), 1e-12),
-                        100 * (m[i, j] - ref[i, j]) / scale[j])
+                        100 * shear_deviation(ref, m)[i, j])
                 lines.append(row)
         summary = []
         for a in radii:
-            dev = np.abs(meas[a][0] - ref) / scale
+            dev = np.abs(shear_deviation(ref, meas[a][0]))
             ok = (found is not None and dev.mean() <= SHEAR_MEAN
                   and dev.max() <= SHEAR_MAX)
             ok_all &= ok
