@@ -80,7 +80,7 @@ void Foam::fdmParticleCloud::updatePairs()
     );
     const fdm::pairStepInput in
     {
-        state_.position, state_.radius, box_, near_, step, state_.Uold
+        state_.position, state_.radius, box_, near_, step, state_.Uold, 0
     };
     for (pairInteraction& pi : pairInteractions_)
     {

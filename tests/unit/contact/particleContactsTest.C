@@ -77,7 +77,7 @@ struct contactCase
         DynamicList<labelPair> near;
         const scalarField radii(2, 1.0);
         fdm::findNearPairs(box, x, radii, m.pairReach(), near);
-        m.update({x, radii, box, near, s, Uold});
+        m.update({x, radii, box, near, s, Uold, 0});
         List<vector> Omega(2, Zero);
         bool converged = true;
         for (label outer = 0; outer < 8; ++outer)
@@ -116,7 +116,8 @@ struct contactCase
         DynamicList<labelPair> near;
         fdm::findNearPairs(box, x, radii, m.pairReach(), near);
         const fdm::positionStep euler(fdm::positionStep::euler(1e-3));
-        m.update({x, radii, box, near, euler, List<vector>(x.size(), Zero)});
+        const List<vector> Uold(x.size(), Zero);
+        m.update({x, radii, box, near, euler, Uold, 0});
     }
 };
 
@@ -267,7 +268,8 @@ TEST(particleContacts, pairBelowTheFloorIsAsStiffAsAHundredthOfHrAboveIt)
             near);
         const scalarField radii(2, 1.0);
         const fdm::positionStep euler(fdm::positionStep::euler(dt));
-        m->update({x, radii, cc.box, near, euler, List<vector>(2, Zero)});
+        const List<vector> Uold(2, Zero);
+        m->update({x, radii, cc.box, near, euler, Uold, 0});
         fdm::particleVelocitySystem system(2);
         for (direction d = 0; d < 6; ++d)
         {

@@ -13,20 +13,11 @@ using Foam::constant::mathematical::pi;
 
 // * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
 
-const char* Foam::fdm::lubricatedDEM::stressPartName(const label part)
-{
-    static const char* names[nStressParts] =
-        {"normalContact", "shearContact", "normalLubrication",
-         "shearLubrication"};
-    return names[part];
-}
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::fdm::lubricatedDEM::reach() const
 {
-    return model_.cutoff()*max(radius_);
+    return model().cutoff()*max(radius_);
 }
 
 
@@ -72,20 +63,26 @@ void Foam::fdm::lubricatedDEM::searchPairs()
         }
     }
 
-    DynamicList<labelPair> pairs;
     if (delaunayInterval_ > 0)
     {
-        findDelaunayPairs(box_, position_, radius_, pairs);
+        findDelaunayPairs(box_, position_, radius_, near_);
     }
     else
     {
-        findNearPairs(box_, position_, radius_, reach() + skin_, pairs);
+        findNearPairs(box_, position_, radius_, reach() + skin_, near_);
     }
 
-    // Carry the history of pairs listed before; a new pair starts
-    // inactive with a defined state (written to particleState even before
-    // it interacts)
-    pairs_.carry(pairs, {lubricatedPairState{0, false, Zero}, false});
+    // Two fixed spheres: their loads move nothing (and rows of a sheared
+    // floor slide past each other)
+    label kept = 0;
+    for (const labelPair& p : near_)
+    {
+        if (mobile_[p.first()] || mobile_[p.second()])
+        {
+            near_[kept++] = p;
+        }
+    }
+    near_.setSize(kept);
     displacementSinceSearch_ = Zero;
     timeSinceSearch_ = 0;
     stepsSinceSearch_ = 0;
@@ -104,7 +101,7 @@ Foam::fdm::lubricatedDEM::lubricatedDEM
 :
     box_(box),
     shearRate_(shearRate),
-    model_(model),
+    pairs_(model),
     dragViscosity_(0),
     isolatedDragViscosity_(0),
     isolatedBelow_(0),
@@ -118,10 +115,6 @@ Foam::fdm::lubricatedDEM::lubricatedDEM
     stepsSinceSearch_(0),
     timeSinceSearch_(GREAT),
     nSearches_(0),
-    stresslet_(nStressParts),
-    nInteractions_(0),
-    nContacts_(0),
-    nCrushed_(0),
     stabilityNumber_(0),
     time_(0)
 {
@@ -171,14 +164,10 @@ Foam::label Foam::fdm::lubricatedDEM::addParticle
     bodyForce_.append(Zero);
     mobile_.append(mobile);
     displacementSinceSearch_.append(Zero);
-    force_.append(Zero);
-    torque_.append(Zero);
-    contactForce_.append(Zero);
-    contactTorque_.append(Zero);
-    for (List<symmTensor>& s : stresslet_)
-    {
-        s.append(Zero);
-    }
+    loads_.force.append(Zero);
+    loads_.torque.append(Zero);
+    loads_.stresslet.append(Zero);
+    pairs_.addParticle();
     timeSinceSearch_ = GREAT;
     return i;
 }
@@ -237,29 +226,6 @@ void Foam::fdm::lubricatedDEM::setTime(const scalar t)
 }
 
 
-Foam::fdm::contactNetwork Foam::fdm::lubricatedDEM::network() const
-{
-    contactNetwork links;
-    forAll(pairForce_, k)
-    {
-        if (pairForce_[k] != vector::zero)
-        {
-            const label i = pairs_.pair(k).first();
-            const label j = pairs_.pair(k).second();
-            links.append
-            (
-                contactLink::split
-                (
-                    i, j, box_.minimumImage(position_[j] - position_[i]),
-                    pairForce_[k]
-                )
-            );
-        }
-    }
-    return links;
-}
-
-
 Foam::vector Foam::fdm::lubricatedDEM::labVelocity(const label i) const
 {
     return velocity_[i] + vector(shearRate_*position_[i].y(), 0, 0);
@@ -269,7 +235,7 @@ Foam::vector Foam::fdm::lubricatedDEM::labVelocity(const label i) const
 Foam::symmTensor Foam::fdm::lubricatedDEM::stress(const label part) const
 {
     const vector& L = box_.span();
-    return sum(stresslet_[part])/(L.x()*L.y()*L.z());
+    return sum(stresslets(part))/(L.x()*L.y()*L.z());
 }
 
 
@@ -290,7 +256,8 @@ Foam::scalar Foam::fdm::lubricatedDEM::volumeFraction() const
 
 Foam::scalar Foam::fdm::lubricatedDEM::criticalTimeStep() const
 {
-    const scalar k = max(model_.stiffness(), model_.tangentialStiffness());
+    const lubricatedContact& law = model();
+    const scalar k = max(law.stiffness(), law.tangentialStiffness());
     scalar dt = GREAT;
     forAll(mass_, i)
     {
@@ -298,7 +265,7 @@ Foam::scalar Foam::fdm::lubricatedDEM::criticalTimeStep() const
         {
             dt = min(dt, std::sqrt(mass_[i]/k));
             const scalar kSpin =
-                model_.tangentialStiffness()*sqr(radius_[i]);
+                law.tangentialStiffness()*sqr(radius_[i]);
             dt = min(dt, std::sqrt(inertia_[i]/kSpin));
         }
     }

@@ -14,69 +14,6 @@ Description
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fdm::lubricatedDEM::writePairs(Ostream& os) const
-{
-    boolList active(pairs_.size());
-    scalarList logGap(pairs_.size());
-    boolList contact(pairs_.size());
-    List<vector> shearForce(pairs_.size());
-    forAll(active, k)
-    {
-        active[k] = pairs_[k].active;
-        logGap[k] = pairs_[k].state.logGap;
-        contact[k] = pairs_[k].state.contact;
-        shearForce[k] = pairs_[k].state.shearForce;
-    }
-    os.writeEntry("pairs", pairs_.pairs());
-    os.writeEntry("pairActive", active);
-    os.writeEntry("pairLogGap", logGap);
-    os.writeEntry("pairContact", contact);
-    os.writeEntry("pairShearForce", shearForce);
-}
-
-
-void Foam::fdm::lubricatedDEM::readPairs(const dictionary& dict)
-{
-    const List<labelPair> pairs(dict.get<List<labelPair>>("pairs"));
-    const boolList active(dict.get<boolList>("pairActive"));
-    const scalarList logGap(dict.get<scalarList>("pairLogGap"));
-    const boolList contact(dict.get<boolList>("pairContact"));
-    const List<vector> shearForce(dict.get<List<vector>>("pairShearForce"));
-    const bool onePerPair =
-        active.size() == pairs.size() && logGap.size() == pairs.size()
-     && contact.size() == pairs.size() && shearForce.size() == pairs.size();
-    if (!onePerPair)
-    {
-        FatalIOErrorInFunction(dict)
-            << dict.name() << ": pairActive, pairLogGap, pairContact and"
-            << " pairShearForce must list one entry per pair (" << pairs.size()
-            << " pairs)" << exit(FatalIOError);
-    }
-    List<pairEntry> entries(pairs.size());
-    forAll(entries, k)
-    {
-        const labelPair& p = pairs[k];
-        if (p.first() < 0 || p.first() >= p.second() || p.second() >= size())
-        {
-            FatalIOErrorInFunction(dict)
-                << dict.name() << ": pair " << p << " is not two particles"
-                << " i < j of the " << size() << exit(FatalIOError);
-        }
-        entries[k] =
-        {
-            lubricatedPairState{logGap[k], bool(contact[k]), shearForce[k]},
-            bool(active[k])
-        };
-    }
-    if (!pairs_.reset(pairs, entries))
-    {
-        FatalIOErrorInFunction(dict)
-            << dict.name() << ": pairs lists a pair twice"
-            << exit(FatalIOError);
-    }
-}
-
-
 void Foam::fdm::lubricatedDEM::writeState(Ostream& os) const
 {
     os.writeEntry("time", time_);
@@ -86,17 +23,21 @@ void Foam::fdm::lubricatedDEM::writeState(Ostream& os) const
     os.writeEntry("angularVelocity", spin_);
     os.writeEntry("radius", radius_);
     os.writeEntry("mobile", mobile_);
-    for (label p = 0; p < nStressParts; ++p)
+    for (label p = 0; p < lubricatedInteraction::nStressParts; ++p)
     {
         // Output only (local stress profiles); not read back
         os.writeEntry
         (
-            word("stresslet_" + std::string(stressPartName(p))),
-            stresslet_[p]
+            word
+            (
+                "stresslet_"
+              + std::string(lubricatedInteraction::stressPartName(p))
+            ),
+            stresslets(p)
         );
     }
 
-    writePairs(os);
+    pairs_.writePairs(os);
     os.writeEntry("pairSelection", pairSelectionName());
     os.writeEntry("timeSinceSearch", timeSinceSearch_);
     os.writeEntry("stepsSinceSearch", stepsSinceSearch_);
@@ -130,7 +71,8 @@ void Foam::fdm::lubricatedDEM::readState(const dictionary& dict)
     velocity_ = dict.get<List<vector>>("velocity");
     spin_ = dict.get<List<vector>>("angularVelocity");
 
-    readPairs(dict);
+    pairs_.readPairs(dict, mobile_);
+    near_ = pairs_.pairs();
     timeSinceSearch_ = dict.get<scalar>("timeSinceSearch");
     stepsSinceSearch_ = dict.getOrDefault<label>("stepsSinceSearch", 0);
     displacementSinceSearch_ =

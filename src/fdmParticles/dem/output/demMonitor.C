@@ -13,7 +13,7 @@
 Foam::symmTensor Foam::fdm::totalStress(const lubricatedDEM& dem)
 {
     symmTensor s(Zero);
-    for (label p = 0; p < fdm::lubricatedDEM::nStressParts; ++p)
+    for (label p = 0; p < fdm::lubricatedInteraction::nStressParts; ++p)
     {
         s += dem.stress(p);
     }

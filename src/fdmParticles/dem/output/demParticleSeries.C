@@ -79,13 +79,13 @@ void Foam::fdm::demParticleSeries::append(const lubricatedDEM& dem)
             dem.forces()[i] - dem.bodyForces()[i] - dem.contactForces()[i];
         lubricationTorque[i] = dem.torques()[i] - dem.contactTorques()[i];
         const symmTensor S =
-            dem.stresslets(lubricatedDEM::normalLubrication)[i]
-          + dem.stresslets(lubricatedDEM::shearLubrication)[i];
+            dem.stresslets(lubricatedInteraction::normalLubrication)[i]
+          + dem.stresslets(lubricatedInteraction::shearLubrication)[i];
         trace[i] = tr(S);
         lubrication[i] = dev(S);
         contact[i] =
-            dem.stresslets(lubricatedDEM::normalContact)[i]
-          + dem.stresslets(lubricatedDEM::shearContact)[i];
+            dem.stresslets(lubricatedInteraction::normalContact)[i]
+          + dem.stresslets(lubricatedInteraction::shearContact)[i];
     }
     writer_->append
     (

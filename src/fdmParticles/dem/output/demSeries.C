@@ -52,9 +52,9 @@ Foam::fdm::demSeries::demSeries
         << " compression < 0), viscosity " << dem.model().viscosity()
         << ", shear rate " << dem.shearRate() << nl
         << "# time strain phi interactions contacts stabilityNumber";
-    for (label p = 0; p < fdm::lubricatedDEM::nStressParts; ++p)
+    for (label p = 0; p < fdm::lubricatedInteraction::nStressParts; ++p)
     {
-        const word n(fdm::lubricatedDEM::stressPartName(p));
+        const word n(fdm::lubricatedInteraction::stressPartName(p));
         os  << ' ' << n << "_xx " << n << "_yy " << n << "_zz "
             << n << "_xy";
     }
@@ -108,7 +108,7 @@ void Foam::fdm::demSeries::append(const lubricatedDEM& dem)
     os  << dem.time() << ' ' << dem.shearRate()*dem.time() << ' '
         << dem.volumeFraction() << ' ' << dem.nInteractions() << ' '
         << dem.nContacts() << ' ' << dem.stabilityNumber();
-    for (label p = 0; p < fdm::lubricatedDEM::nStressParts; ++p)
+    for (label p = 0; p < fdm::lubricatedInteraction::nStressParts; ++p)
     {
         const symmTensor s = dem.stress(p);
         os  << ' ' << s.xx() << ' ' << s.yy() << ' ' << s.zz() << ' '

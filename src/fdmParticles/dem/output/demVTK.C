@@ -38,7 +38,7 @@ void Foam::fdm::demVTK::write
         U[i] = dem.labVelocity(i);
     }
     symmTensorField S(dem.size(), Zero);
-    for (label p = 0; p < fdm::lubricatedDEM::nStressParts; ++p)
+    for (label p = 0; p < fdm::lubricatedInteraction::nStressParts; ++p)
     {
         S += dem.stresslets(p);
     }
@@ -53,11 +53,11 @@ void Foam::fdm::demVTK::write
     file.write("force", dem.forces());
     file.write("torque", dem.torques());
     file.write("stresslet", S);
-    for (label p = 0; p < fdm::lubricatedDEM::nStressParts; ++p)
+    for (label p = 0; p < fdm::lubricatedInteraction::nStressParts; ++p)
     {
         file.write
         (
-            "stresslet_" + word(fdm::lubricatedDEM::stressPartName(p)),
+            "stresslet_" + word(fdm::lubricatedInteraction::stressPartName(p)),
             dem.stresslets(p)
         );
     }

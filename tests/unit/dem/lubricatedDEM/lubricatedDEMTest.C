@@ -291,22 +291,26 @@ TEST(lubricatedDEM, restartFromTheWrittenStateIsBitwise)
 
 TEST(lubricatedDEM, writtenStateOfPairsThatNeverInteractedIsDefined)
 {
-    // Two fixed spheres nearly touching: listed, never stepped (their loads
-    // move nothing), so only the pair search defines their state
+    // A pair beyond the cut-off (gap 4.1 a) but within its skin (0.3 a):
+    // listed, never stepped, so only the pair search defines its state;
+    // two fixed spheres nearly touching are not listed (their loads move
+    // nothing)
     fdm::lubricatedDEM dem
     (
         cube(40), 1, fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-3, 0.4, 4)
     );
     dem.addParticle(point(20, 20, 20), 1, 1, false);
-    dem.addParticle(point(20, 22.01, 20), 1, 1, false);
-    dem.addParticle(point(10, 10, 10), 1, 1);
+    dem.addParticle(point(20, 26.1, 20), 1, 1);
+    dem.addParticle(point(20, 17.99, 20), 1, 1, false);
     dem.step(1e-3);
+    ASSERT_EQ(dem.nInteractions(), 0);
 
     OStringStream os;
     dem.writeState(os);
     IStringStream is(os.str());
     const dictionary state(is);
     ASSERT_EQ(state.get<List<labelPair>>("pairs").size(), 1);
+    EXPECT_EQ(state.get<List<labelPair>>("pairs")[0], labelPair(0, 1));
     EXPECT_EQ(state.get<scalarList>("pairLogGap")[0], 0);
     EXPECT_FALSE(state.get<boolList>("pairContact")[0]);
     EXPECT_EQ(state.get<List<vector>>("pairShearForce")[0], vector::zero);

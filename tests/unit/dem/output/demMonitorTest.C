@@ -19,7 +19,7 @@ TEST(demMonitor, stableSystemPassesUnstableStepStops)
         "");
 
     symmTensor sum(Zero);
-    for (label p = 0; p < fdm::lubricatedDEM::nStressParts; ++p)
+    for (label p = 0; p < fdm::lubricatedInteraction::nStressParts; ++p)
     {
         sum += stable.stress(p);
     }

@@ -85,11 +85,11 @@ TEST(demParticleSeries, recordsSplitThePairLoadsAsTheFDMRecords)
             EXPECT_NEAR(Fc[d], -Fc[3 + d], 1e-12*mag(dem.contactForces()[0]));
         }
         const symmTensor lubrication =
-            dem.stresslets(fdm::lubricatedDEM::normalLubrication)[i]
-          + dem.stresslets(fdm::lubricatedDEM::shearLubrication)[i];
+            dem.stresslets(fdm::lubricatedInteraction::normalLubrication)[i]
+          + dem.stresslets(fdm::lubricatedInteraction::shearLubrication)[i];
         const symmTensor contact =
-            dem.stresslets(fdm::lubricatedDEM::normalContact)[i]
-          + dem.stresslets(fdm::lubricatedDEM::shearContact)[i];
+            dem.stresslets(fdm::lubricatedInteraction::normalContact)[i]
+          + dem.stresslets(fdm::lubricatedInteraction::shearContact)[i];
         EXPECT_NEAR(s[i], tr(lubrication), 1e-14);
         EXPECT_NEAR(S[6*i] + S[6*i + 3] + S[6*i + 5], 0, 1e-14);
         for (direction c = 0; c < 6; ++c)

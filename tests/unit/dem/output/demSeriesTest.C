@@ -52,7 +52,7 @@ TEST(demSeries, rowHoldsTimeStrainFractionCountsAndStresses)
     const wordList& names = first.first;
     const scalarList& row = first.second;
     ASSERT_EQ(row.size(), names.size());
-    ASSERT_EQ(names.size(), 6 + 4*fdm::lubricatedDEM::nStressParts);
+    ASSERT_EQ(names.size(), 6 + 4*fdm::lubricatedInteraction::nStressParts);
 
     EXPECT_NEAR(row[0], 0.2, 1e-12);                       // time
     EXPECT_NEAR(row[1], 0.2, 1e-12);                       // strain
@@ -61,7 +61,7 @@ TEST(demSeries, rowHoldsTimeStrainFractionCountsAndStresses)
     EXPECT_NEAR(row[2], phi, 1e-10);
     EXPECT_EQ(row[3], dem.nInteractions());
     EXPECT_GT(row[3], 0);
-    for (label p = 0; p < fdm::lubricatedDEM::nStressParts; ++p)
+    for (label p = 0; p < fdm::lubricatedInteraction::nStressParts; ++p)
     {
         EXPECT_NEAR(row[6 + 4*p + 3], dem.stress(p).xy(),
             1e-9*mag(dem.stress(p)) + VSMALL) << names[6 + 4*p + 3];

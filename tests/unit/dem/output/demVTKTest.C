@@ -40,10 +40,10 @@ TEST(demVTK, writesAtTheStartAndEveryIntervalWithEverySphere)
     );
     EXPECT_NE(xml.find("NumberOfPoints='3'"), std::string::npos)
         << xml.substr(0, 600);
-    for (label p = 0; p < fdm::lubricatedDEM::nStressParts; ++p)
+    for (label p = 0; p < fdm::lubricatedInteraction::nStressParts; ++p)
     {
         const std::string name =
-            "stresslet_" + std::string(fdm::lubricatedDEM::stressPartName(p));
+            "stresslet_" + std::string(fdm::lubricatedInteraction::stressPartName(p));
         EXPECT_NE(xml.find(name), std::string::npos) << name;
     }
 }

@@ -76,7 +76,8 @@ void update
     DynamicList<labelPair> near;
     fdm::findNearPairs(box, x, radii, m.pairReach(), near);
     const fdm::positionStep euler(fdm::positionStep::euler(1e-3));
-    m.update({x, radii, box, near, euler, List<vector>(x.size(), Zero)});
+    const List<vector> Uold(x.size(), Zero);
+    m.update({x, radii, box, near, euler, Uold, 0});
 }
 
 const fdm::periodicBox periodic10

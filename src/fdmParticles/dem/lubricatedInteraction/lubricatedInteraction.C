@@ -1,0 +1,369 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+
+\*---------------------------------------------------------------------------*/
+
+#include "lubricatedInteraction.H"
+#include "tensor.H"
+
+#include <algorithm>
+
+// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
+
+const char* Foam::fdm::lubricatedInteraction::stressPartName(const label part)
+{
+    static const char* names[nStressParts] =
+        {"normalContact", "shearContact", "normalLubrication",
+         "shearLubrication"};
+    return names[part];
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::fdm::lubricatedInteraction::lubricatedInteraction
+(
+    const lubricatedContact& model
+)
+:
+    model_(model),
+    shearRate_(0),
+    maxRadius_(0),
+    stresslet_(nStressParts),
+    nInteractions_(0),
+    nContacts_(0),
+    nCrushed_(0)
+{}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fdm::lubricatedInteraction::resetLoads(const label n)
+{
+    pairForce_.setSize(pairs_.size());
+    pairForce_ = Zero;
+    twoBodyForce_.setSize(model_.twoSphereHydrodynamics() ? pairs_.size() : 0);
+    torque_.setSize(n);
+    torque_ = Zero;
+    contactForce_.setSize(n);
+    contactForce_ = Zero;
+    contactTorque_.setSize(n);
+    contactTorque_ = Zero;
+    for (List<symmTensor>& s : stresslet_)
+    {
+        s.setSize(n);
+        s = Zero;
+    }
+    totals_ = particleTotals
+    {
+        List<symmTensor>(n, Zero),
+        List<symmTensor>(model_.twoSphereHydrodynamics() ? n : 0, Zero),
+        labelList(n, Zero),
+        scalarList(n, Zero),
+        scalarList(n, Zero)
+    };
+    nInteractions_ = 0;
+    nContacts_ = 0;
+    nCrushed_ = 0;
+}
+
+
+void Foam::fdm::lubricatedInteraction::advancePair
+(
+    const label k,
+    const List<vector>& U,
+    const List<vector>& Omega,
+    const scalar dt,
+    const scalar logCrushed
+)
+{
+    const label i = pairs_.pair(k).first();
+    const label j = pairs_.pair(k).second();
+    const pairGeometry& g = geometry_[k];
+    const scalar un = g.centreGap;
+    const scalar a = 0.5*(radius_[i] + radius_[j]);
+    if (!model_.interacts(un, a))
+    {
+        pairs_[k].active = false;
+        return;
+    }
+    if (!pairs_[k].active)
+    {
+        pairs_[k].state = model_.start(un, a);
+        pairs_[k].active = true;
+    }
+
+    const vector& nij = g.normal;
+    const scalar armI = radius_[i] + 0.5*un;
+    const scalar armJ = radius_[j] + 0.5*un;
+
+    // Relative velocity of the surfaces, the affine shear across the branch
+    // vector included (frame-invariant: zero for a pair in rigid-body
+    // motion)
+    vector dv = U[j] - U[i];
+    dv.x() += shearRate_*g.branchY;
+    const vector contactVelocity = model_.surfaceVelocity
+    (
+        dv, nij, un, radius_[i], radius_[j], Omega[i], Omega[j]
+    );
+    const vector w = Omega[j] - Omega[i];
+
+    const lubricatedPairLoads loads = model_.step
+    (
+        {nij, un, a, contactVelocity, w, 0.5*(Omega[i] + Omega[j])},
+        dt,
+        pairs_[k].state
+    );
+    pairForce_[k] = loads.force(nij);
+    addPairSums(loads, nij, w, armI, armJ, i, j);
+    if (model_.twoSphereHydrodynamics())
+    {
+        addTwoBodyLoads(k, U, Omega, armI, armJ);
+    }
+
+    ++nInteractions_;
+    if (pairs_[k].state.contact)
+    {
+        ++nContacts_;
+        if (pairs_[k].state.logGap < logCrushed)
+        {
+            ++nCrushed_;
+        }
+    }
+}
+
+
+void Foam::fdm::lubricatedInteraction::addPairSums
+(
+    const lubricatedPairLoads& loads,
+    const vector& nij,
+    const vector& w,
+    const scalar armI,
+    const scalar armJ,
+    const label i,
+    const label j
+)
+{
+    const vector Fs = loads.shearContact + loads.shearLubrication;
+    const vector wn = (w & nij)*nij;
+    const vector Tv = loads.rollingDamping*(w - wn) + loads.twistingDamping*wn;
+    torque_[i] += armI*(nij ^ Fs) + Tv;
+    torque_[j] += armJ*(nij ^ Fs) - Tv;
+    const vector Fc = loads.normalContact*nij + loads.shearContact;
+    contactForce_[i] += Fc;
+    contactForce_[j] -= Fc;
+    contactTorque_[i] += armI*(nij ^ loads.shearContact);
+    contactTorque_[j] += armJ*(nij ^ loads.shearContact);
+
+    const vector parts[nStressParts] =
+    {
+        loads.normalContact*nij,
+        loads.shearContact,
+        loads.normalLubrication*nij,
+        loads.shearLubrication
+    };
+    for (label p = 0; p < nStressParts; ++p)
+    {
+        const symmTensor S = symm(parts[p]*nij);
+        stresslet_[p][i] += armI*S;
+        stresslet_[p][j] += armJ*S;
+    }
+
+    // The point-implicit totals
+    const symmTensor nn = sqr(nij);
+    const symmTensor D =
+        loads.rollingDamping*(symmTensor::I - nn) + loads.twistingDamping*nn;
+    totals_.damping[i] += D;
+    totals_.damping[j] += D;
+    const scalar kSum = loads.normalStiffness + loads.shearStiffness;
+    totals_.stiffness[i] += kSum;
+    totals_.stiffness[j] += kSum;
+    totals_.spinStiffness[i] += loads.shearStiffness*sqr(armI);
+    totals_.spinStiffness[j] += loads.shearStiffness*sqr(armJ);
+    ++totals_.nNeighbours[i];
+    ++totals_.nNeighbours[j];
+}
+
+
+void Foam::fdm::lubricatedInteraction::addTwoBodyLoads
+(
+    const label k,
+    const List<vector>& U,
+    const List<vector>& Omega,
+    const scalar armI,
+    const scalar armJ
+)
+{
+    const label i = pairs_.pair(k).first();
+    const label j = pairs_.pair(k).second();
+    const vector& nij = geometry_[k].normal;
+
+    // Velocities relative to the ambient shear: the given velocities
+    // already are (whatever the periodic image), the spins less the
+    // flow's; the squeeze is the implicit normal model's
+    const vector flowSpin(0, 0, -0.5*shearRate_);
+    const symmTensor E(0, 0.5*shearRate_, 0, 0, 0, 0);
+    const twoSphereLoads h = model_.twoBody().loads
+    (
+        nij, geometry_[k].centreGap, radius_[i], radius_[j],
+        U[i], Omega[i] - flowSpin,
+        U[j], Omega[j] - flowSpin,
+        E, false
+    );
+    twoBodyForce_[k] = Pair<vector>(h.force[0], h.force[1]);
+    torque_[i] += h.torque[0];
+    torque_[j] += h.torque[1];
+    totals_.translationDamping[i] += h.translationDamping[0];
+    totals_.translationDamping[j] += h.translationDamping[1];
+    totals_.damping[i] += h.rotationDamping[0];
+    totals_.damping[j] += h.rotationDamping[1];
+
+    // Stress parts as for the thesis forms: each force at the mid-gap
+    // point, split along n (normal lubrication) and across (shear)
+    const scalar arm[2] = {armI, -armJ};
+    const label particle[2] = {i, j};
+    for (label s = 0; s < 2; ++s)
+    {
+        const vector Fn = (h.force[s] & nij)*nij;
+        stresslet_[normalLubrication][particle[s]] += arm[s]*symm(Fn*nij);
+        stresslet_[shearLubrication][particle[s]] +=
+            arm[s]*symm((h.force[s] - Fn)*nij);
+    }
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+void Foam::fdm::lubricatedInteraction::addParticle()
+{
+    torque_.append(Zero);
+    contactForce_.append(Zero);
+    contactTorque_.append(Zero);
+    for (List<symmTensor>& s : stresslet_)
+    {
+        s.append(Zero);
+    }
+}
+
+
+void Foam::fdm::lubricatedInteraction::update(const pairStepInput& in)
+{
+    radius_ = in.radii;
+    maxRadius_ = radius_.empty() ? 0 : max(radius_);
+    shearRate_ = in.shearRate;
+
+    // Carry the history of pairs listed before; a new pair starts
+    // inactive with a defined state (written to particleState even before
+    // it interacts)
+    const UList<labelPair>& listed = pairs_.pairs();
+    const bool sameList =
+        listed.size() == in.near.size()
+     && std::equal(listed.begin(), listed.end(), in.near.begin());
+    if (!sameList)
+    {
+        pairs_.carry(in.near, {lubricatedPairState{0, false, Zero}, false});
+    }
+
+    geometry_.setSize(pairs_.size());
+    forAll(geometry_, k)
+    {
+        const label i = pairs_.pair(k).first();
+        const label j = pairs_.pair(k).second();
+        const vector l =
+            in.box.minimumImage(in.positions[j] - in.positions[i]);
+        const scalar dist = mag(l);
+        geometry_[k] =
+            pairGeometry{l/dist, dist - radius_[i] - radius_[j], l.y()};
+    }
+}
+
+
+void Foam::fdm::lubricatedInteraction::advance
+(
+    const List<vector>& U,
+    const List<vector>& Omega,
+    const scalar dt
+)
+{
+    resetLoads(radius_.size());
+    // Smooth spheres (roughness 0) never touch: no crushed threshold
+    const scalar logCrushed =
+        model_.roughness() > 0 ? std::log(0.01*model_.roughness()) : -GREAT;
+    forAll(geometry_, k)
+    {
+        advancePair(k, U, Omega, dt, logCrushed);
+    }
+}
+
+
+void Foam::fdm::lubricatedInteraction::addSolvedLoads
+(
+    const List<vector>& U,
+    const List<vector>& Omega,
+    const fluidProperties& fluid,
+    particleLoads& loads,
+    List<scalar>& dipoleTrace
+) const
+{
+    // Pair by pair, in the order of the list, as the forces were summed
+    // before this class held them (bitwise-equal trajectories)
+    const bool twoBody = model_.twoSphereHydrodynamics();
+    forAll(pairForce_, k)
+    {
+        if (!pairs_[k].active)
+        {
+            continue;
+        }
+        const label i = pairs_.pair(k).first();
+        const label j = pairs_.pair(k).second();
+        loads.force[i] += pairForce_[k];
+        loads.force[j] -= pairForce_[k];
+        if (twoBody)
+        {
+            loads.force[i] += twoBodyForce_[k].first();
+            loads.force[j] += twoBodyForce_[k].second();
+        }
+    }
+    forAll(torque_, i)
+    {
+        loads.torque[i] += torque_[i];
+        for (const List<symmTensor>& s : stresslet_)
+        {
+            loads.stresslet[i] += s[i];
+        }
+    }
+}
+
+
+Foam::fdm::contactNetwork Foam::fdm::lubricatedInteraction::network
+(
+    const UList<point>& positions,
+    const periodicBox& box
+) const
+{
+    contactNetwork links;
+    forAll(pairForce_, k)
+    {
+        const vector F =
+            twoBodyForce_.size()
+          ? pairForce_[k] + twoBodyForce_[k].first()
+          : pairForce_[k];
+        if (F != vector::zero)
+        {
+            const label i = pairs_.pair(k).first();
+            const label j = pairs_.pair(k).second();
+            links.append
+            (
+                contactLink::split
+                (
+                    i, j, box.minimumImage(positions[j] - positions[i]), F
+                )
+            );
+        }
+    }
+    return links;
+}
+
+
+// ************************************************************************* //
