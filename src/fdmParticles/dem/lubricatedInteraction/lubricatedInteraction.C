@@ -31,7 +31,6 @@ Foam::fdm::lubricatedInteraction::lubricatedInteraction
     shearRate_(0),
     maxRadius_(0),
     stresslet_(nStressParts),
-    nInteractions_(0),
     nContacts_(0),
     nCrushed_(0)
 {}
@@ -43,6 +42,7 @@ void Foam::fdm::lubricatedInteraction::resetLoads(const label n)
 {
     pairForce_.setSize(pairs_.size());
     pairForce_ = Zero;
+    activePairs_.clear();
     twoBodyForce_.setSize(model_.twoSphereHydrodynamics() ? pairs_.size() : 0);
     torque_.setSize(n);
     torque_ = Zero;
@@ -63,7 +63,6 @@ void Foam::fdm::lubricatedInteraction::resetLoads(const label n)
         scalarList(n, Zero),
         scalarList(n, Zero)
     };
-    nInteractions_ = 0;
     nContacts_ = 0;
     nCrushed_ = 0;
 }
@@ -122,7 +121,7 @@ void Foam::fdm::lubricatedInteraction::advancePair
         addTwoBodyLoads(k, U, Omega, armI, armJ);
     }
 
-    ++nInteractions_;
+    activePairs_.append(k);
     if (pairs_[k].state.contact)
     {
         ++nContacts_;
@@ -309,12 +308,8 @@ void Foam::fdm::lubricatedInteraction::addSolvedLoads
     // Pair by pair, in the order of the list, as the forces were summed
     // before this class held them (bitwise-equal trajectories)
     const bool twoBody = model_.twoSphereHydrodynamics();
-    forAll(pairForce_, k)
+    for (const label k : activePairs_)
     {
-        if (!pairs_[k].active)
-        {
-            continue;
-        }
         const label i = pairs_.pair(k).first();
         const label j = pairs_.pair(k).second();
         loads.force[i] += pairForce_[k];
