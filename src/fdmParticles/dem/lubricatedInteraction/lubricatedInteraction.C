@@ -30,7 +30,10 @@ Foam::fdm::lubricatedInteraction::lubricatedInteraction
     model_(model),
     shearRate_(0),
     maxRadius_(0),
+    positions_(nullptr),
+    box_(nullptr),
     stresslet_(nStressParts),
+    nInteractions_(0),
     nContacts_(0),
     nCrushed_(0)
 {}
@@ -42,8 +45,8 @@ void Foam::fdm::lubricatedInteraction::resetLoads(const label n)
 {
     pairForce_.setSize(pairs_.size());
     pairForce_ = Zero;
-    activePairs_.clear();
-    twoBodyForce_.setSize(model_.twoSphereHydrodynamics() ? pairs_.size() : 0);
+    force_.setSize(n);
+    force_ = Zero;
     torque_.setSize(n);
     torque_ = Zero;
     contactForce_.setSize(n);
@@ -63,6 +66,7 @@ void Foam::fdm::lubricatedInteraction::resetLoads(const label n)
         scalarList(n, Zero),
         scalarList(n, Zero)
     };
+    nInteractions_ = 0;
     nContacts_ = 0;
     nCrushed_ = 0;
 }
@@ -79,9 +83,11 @@ void Foam::fdm::lubricatedInteraction::advancePair
 {
     const label i = pairs_.pair(k).first();
     const label j = pairs_.pair(k).second();
-    const pairGeometry& g = geometry_[k];
-    const scalar un = g.centreGap;
+    const UList<point>& x = *positions_;
+    const vector l = box_->minimumImage(x[j] - x[i]);
+    const scalar dist = mag(l);
     const scalar a = 0.5*(radius_[i] + radius_[j]);
+    const scalar un = dist - radius_[i] - radius_[j];
     if (!model_.interacts(un, a))
     {
         pairs_[k].active = false;
@@ -93,7 +99,7 @@ void Foam::fdm::lubricatedInteraction::advancePair
         pairs_[k].active = true;
     }
 
-    const vector& nij = g.normal;
+    const vector nij = l/dist;
     const scalar armI = radius_[i] + 0.5*un;
     const scalar armJ = radius_[j] + 0.5*un;
 
@@ -101,7 +107,7 @@ void Foam::fdm::lubricatedInteraction::advancePair
     // vector included (frame-invariant: zero for a pair in rigid-body
     // motion)
     vector dv = U[j] - U[i];
-    dv.x() += shearRate_*g.branchY;
+    dv.x() += shearRate_*l.y();
     const vector contactVelocity = model_.surfaceVelocity
     (
         dv, nij, un, radius_[i], radius_[j], Omega[i], Omega[j]
@@ -114,14 +120,17 @@ void Foam::fdm::lubricatedInteraction::advancePair
         dt,
         pairs_[k].state
     );
-    pairForce_[k] = loads.force(nij);
+    const vector F = loads.force(nij);
+    force_[i] += F;
+    force_[j] -= F;
+    pairForce_[k] = F;
     addPairSums(loads, nij, w, armI, armJ, i, j);
     if (model_.twoSphereHydrodynamics())
     {
-        addTwoBodyLoads(k, U, Omega, armI, armJ);
+        pairForce_[k] += addTwoBodyLoads(k, U, Omega, nij, un, armI, armJ);
     }
 
-    activePairs_.append(k);
+    ++nInteractions_;
     if (pairs_[k].state.contact)
     {
         ++nContacts_;
@@ -185,18 +194,19 @@ void Foam::fdm::lubricatedInteraction::addPairSums
 }
 
 
-void Foam::fdm::lubricatedInteraction::addTwoBodyLoads
+Foam::vector Foam::fdm::lubricatedInteraction::addTwoBodyLoads
 (
     const label k,
     const List<vector>& U,
     const List<vector>& Omega,
+    const vector& nij,
+    const scalar un,
     const scalar armI,
     const scalar armJ
 )
 {
     const label i = pairs_.pair(k).first();
     const label j = pairs_.pair(k).second();
-    const vector& nij = geometry_[k].normal;
 
     // Velocities relative to the ambient shear: the given velocities
     // already are (whatever the periodic image), the spins less the
@@ -205,12 +215,13 @@ void Foam::fdm::lubricatedInteraction::addTwoBodyLoads
     const symmTensor E(0, 0.5*shearRate_, 0, 0, 0, 0);
     const twoSphereLoads h = model_.twoBody().loads
     (
-        nij, geometry_[k].centreGap, radius_[i], radius_[j],
+        nij, un, radius_[i], radius_[j],
         U[i], Omega[i] - flowSpin,
         U[j], Omega[j] - flowSpin,
         E, false
     );
-    twoBodyForce_[k] = Pair<vector>(h.force[0], h.force[1]);
+    force_[i] += h.force[0];
+    force_[j] += h.force[1];
     torque_[i] += h.torque[0];
     torque_[j] += h.torque[1];
     totals_.translationDamping[i] += h.translationDamping[0];
@@ -229,6 +240,7 @@ void Foam::fdm::lubricatedInteraction::addTwoBodyLoads
         stresslet_[shearLubrication][particle[s]] +=
             arm[s]*symm((h.force[s] - Fn)*nij);
     }
+    return h.force[0];
 }
 
 
@@ -236,6 +248,7 @@ void Foam::fdm::lubricatedInteraction::addTwoBodyLoads
 
 void Foam::fdm::lubricatedInteraction::addParticle()
 {
+    force_.append(Zero);
     torque_.append(Zero);
     contactForce_.append(Zero);
     contactTorque_.append(Zero);
@@ -264,17 +277,8 @@ void Foam::fdm::lubricatedInteraction::update(const pairStepInput& in)
         pairs_.carry(in.near, {lubricatedPairState{0, false, Zero}, false});
     }
 
-    geometry_.setSize(pairs_.size());
-    forAll(geometry_, k)
-    {
-        const label i = pairs_.pair(k).first();
-        const label j = pairs_.pair(k).second();
-        const vector l =
-            in.box.minimumImage(in.positions[j] - in.positions[i]);
-        const scalar dist = mag(l);
-        geometry_[k] =
-            pairGeometry{l/dist, dist - radius_[i] - radius_[j], l.y()};
-    }
+    positions_ = &in.positions;
+    box_ = &in.box;
 }
 
 
@@ -289,7 +293,7 @@ void Foam::fdm::lubricatedInteraction::advance
     // Smooth spheres (roughness 0) never touch: no crushed threshold
     const scalar logCrushed =
         model_.roughness() > 0 ? std::log(0.01*model_.roughness()) : -GREAT;
-    forAll(geometry_, k)
+    forAll(pairs_, k)
     {
         advancePair(k, U, Omega, dt, logCrushed);
     }
@@ -305,23 +309,9 @@ void Foam::fdm::lubricatedInteraction::addSolvedLoads
     List<scalar>& dipoleTrace
 ) const
 {
-    // Pair by pair, in the order of the list, as the forces were summed
-    // before this class held them (bitwise-equal trajectories)
-    const bool twoBody = model_.twoSphereHydrodynamics();
-    for (const label k : activePairs_)
+    forAll(force_, i)
     {
-        const label i = pairs_.pair(k).first();
-        const label j = pairs_.pair(k).second();
-        loads.force[i] += pairForce_[k];
-        loads.force[j] -= pairForce_[k];
-        if (twoBody)
-        {
-            loads.force[i] += twoBodyForce_[k].first();
-            loads.force[j] += twoBodyForce_[k].second();
-        }
-    }
-    forAll(torque_, i)
-    {
+        loads.force[i] += force_[i];
         loads.torque[i] += torque_[i];
         for (const List<symmTensor>& s : stresslet_)
         {
@@ -340,10 +330,7 @@ Foam::fdm::contactNetwork Foam::fdm::lubricatedInteraction::network
     contactNetwork links;
     forAll(pairForce_, k)
     {
-        const vector F =
-            twoBodyForce_.size()
-          ? pairForce_[k] + twoBodyForce_[k].first()
-          : pairForce_[k];
+        const vector& F = pairForce_[k];
         if (F != vector::zero)
         {
             const label i = pairs_.pair(k).first();
