@@ -62,6 +62,8 @@ INTERNAL = {
     ("src/fdmParticles/functionObjects/suspensionStress/suspensionStress.C",
      "state"),
     ("src/fdmParticles/dem/lubricatedDEM/lubricatedDEMState.C", "dict"),
+    ("src/fdmParticles/dem/lubricatedInteraction/lubricatedInteractionIO.C",
+     "dict"),
     ("src/fdmParticles/subGrid/resistanceTableRead.C", "dict"),
     ("src/fdmParticles/subGrid/resistanceTableRead.C", "fd"),
     ("src/fdmParticles/subGrid/subGridModel/frameInvariantSubGrid.C",
