@@ -11,15 +11,7 @@
 
 using Foam::constant::mathematical::pi;
 
-// * * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * //
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
-
-Foam::scalar Foam::fdm::lubricatedDEM::reach() const
-{
-    return model().cutoff()*max(radius_);
-}
-
 
 bool Foam::fdm::lubricatedDEM::searchDue() const
 {
@@ -39,7 +31,7 @@ bool Foam::fdm::lubricatedDEM::searchDue() const
     {
         maxDisp = max(maxDisp, magSqr(displacementSinceSearch_[i]));
     }
-    const scalar lMax = 2*max(radius_) + reach() + skin_;
+    const scalar lMax = 2*max(radius_) + pairs_.pairReach() + skin_;
     return
         2*std::sqrt(maxDisp) + mag(shearRate_)*lMax*timeSinceSearch_
      >= skin_;
@@ -48,7 +40,7 @@ bool Foam::fdm::lubricatedDEM::searchDue() const
 
 void Foam::fdm::lubricatedDEM::searchPairs()
 {
-    const scalar listReach = 2*max(radius_) + reach() + skin_;
+    const scalar listReach = 2*max(radius_) + pairs_.pairReach() + skin_;
     for (direction d = 0; d < 3; ++d)
     {
         if (box_.periodic(d) && 2*listReach >= box_.span()[d])
@@ -69,7 +61,10 @@ void Foam::fdm::lubricatedDEM::searchPairs()
     }
     else
     {
-        findNearPairs(box_, position_, radius_, reach() + skin_, near_);
+        findNearPairs
+        (
+            box_, position_, radius_, pairs_.pairReach() + skin_, near_
+        );
     }
 
     // Two fixed spheres: their loads move nothing (and rows of a sheared
@@ -167,7 +162,7 @@ Foam::label Foam::fdm::lubricatedDEM::addParticle
     loads_.force.append(Zero);
     loads_.torque.append(Zero);
     loads_.stresslet.append(Zero);
-    pairs_.addParticle();
+    pairs_.addParticle(radius);
     timeSinceSearch_ = GREAT;
     return i;
 }

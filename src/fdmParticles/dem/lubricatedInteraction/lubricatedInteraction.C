@@ -31,6 +31,7 @@ Foam::fdm::lubricatedInteraction::lubricatedInteraction
     shearRate_(0),
     maxRadius_(0),
     positions_(nullptr),
+    radii_(nullptr),
     box_(nullptr),
     stresslet_(nStressParts),
     nInteractions_(0),
@@ -84,10 +85,11 @@ void Foam::fdm::lubricatedInteraction::advancePair
     const label i = pairs_.pair(k).first();
     const label j = pairs_.pair(k).second();
     const UList<point>& x = *positions_;
+    const UList<scalar>& r = *radii_;
     const vector l = box_->minimumImage(x[j] - x[i]);
     const scalar dist = mag(l);
-    const scalar a = 0.5*(radius_[i] + radius_[j]);
-    const scalar un = dist - radius_[i] - radius_[j];
+    const scalar a = 0.5*(r[i] + r[j]);
+    const scalar un = dist - r[i] - r[j];
     if (!model_.interacts(un, a))
     {
         pairs_[k].active = false;
@@ -100,8 +102,8 @@ void Foam::fdm::lubricatedInteraction::advancePair
     }
 
     const vector nij = l/dist;
-    const scalar armI = radius_[i] + 0.5*un;
-    const scalar armJ = radius_[j] + 0.5*un;
+    const scalar armI = r[i] + 0.5*un;
+    const scalar armJ = r[j] + 0.5*un;
 
     // Relative velocity of the surfaces, the affine shear across the branch
     // vector included (frame-invariant: zero for a pair in rigid-body
@@ -110,7 +112,7 @@ void Foam::fdm::lubricatedInteraction::advancePair
     dv.x() += shearRate_*l.y();
     const vector contactVelocity = model_.surfaceVelocity
     (
-        dv, nij, un, radius_[i], radius_[j], Omega[i], Omega[j]
+        dv, nij, un, r[i], r[j], Omega[i], Omega[j]
     );
     const vector w = Omega[j] - Omega[i];
 
@@ -215,7 +217,7 @@ Foam::vector Foam::fdm::lubricatedInteraction::addTwoBodyLoads
     const symmTensor E(0, 0.5*shearRate_, 0, 0, 0, 0);
     const twoSphereLoads h = model_.twoBody().loads
     (
-        nij, un, radius_[i], radius_[j],
+        nij, un, (*radii_)[i], (*radii_)[j],
         U[i], Omega[i] - flowSpin,
         U[j], Omega[j] - flowSpin,
         E, false
@@ -246,8 +248,9 @@ Foam::vector Foam::fdm::lubricatedInteraction::addTwoBodyLoads
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fdm::lubricatedInteraction::addParticle()
+void Foam::fdm::lubricatedInteraction::addParticle(const scalar radius)
 {
+    maxRadius_ = max(maxRadius_, radius);
     force_.append(Zero);
     torque_.append(Zero);
     contactForce_.append(Zero);
@@ -261,8 +264,6 @@ void Foam::fdm::lubricatedInteraction::addParticle()
 
 void Foam::fdm::lubricatedInteraction::update(const pairStepInput& in)
 {
-    radius_ = in.radii;
-    maxRadius_ = radius_.empty() ? 0 : max(radius_);
     shearRate_ = in.shearRate;
 
     // Carry the history of pairs listed before; a new pair starts
@@ -278,6 +279,7 @@ void Foam::fdm::lubricatedInteraction::update(const pairStepInput& in)
     }
 
     positions_ = &in.positions;
+    radii_ = &in.radii;
     box_ = &in.box;
 }
 
@@ -289,7 +291,7 @@ void Foam::fdm::lubricatedInteraction::advance
     const scalar dt
 )
 {
-    resetLoads(radius_.size());
+    resetLoads(positions_->size());
     // Smooth spheres (roughness 0) never touch: no crushed threshold
     const scalar logCrushed =
         model_.roughness() > 0 ? std::log(0.01*model_.roughness()) : -GREAT;
