@@ -35,20 +35,21 @@ def last_time(case):
     return max(times)[1] if times else None
 
 
-def numbers(path):
+def body(path):
+    """A file's text after its banner."""
     with open(path) as f:
-        text = f.read()
-    body = text.split("\\*", 1)[-1]
-    return [float(x) for x in NUMBER.findall(body)]
+        return f.read().split("\\*", 1)[-1]
+
+
+def numbers(path):
+    return [float(x) for x in NUMBER.findall(body(path))]
 
 
 def entries(path):
     """A dictionary file's entries as lists of numbers (a list written
     uniform, N{v}, expanded; words dropped)."""
-    with open(path) as f:
-        body = f.read().split("\\*", 1)[-1]
     out = {}
-    for key, value in ENTRY.findall(body):
+    for key, value in ENTRY.findall(body(path)):
         uniform = UNIFORM.match(value)
         if uniform:
             out[key] = [float(x) for x in NUMBER.findall(uniform.group(2))]
@@ -86,7 +87,11 @@ def compare_pair_sets(old, new):
     if any(mobile[i] or mobile[j] for i, j in only):
         return None
     skip = set(PAIR_ENTRIES) | {"pairs"}
-    worst = max(relative(a[k], b[k]) for k in a if k not in skip)
+    particle = [k for k in a if k not in skip]
+    if set(particle) != set(b) - skip or \
+            any(len(a[k]) != len(b[k]) for k in particle):
+        return None
+    worst = max(relative(a[k], b[k]) for k in particle)
     common = sorted(set(pa) & set(pb))
     worst = max(worst, relative([v for q in common for v in pa[q]],
                                 [v for q in common for v in pb[q]]))
