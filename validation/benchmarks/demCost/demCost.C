@@ -90,22 +90,24 @@ int main(int argc, char* argv[])
             }
             std::mt19937 gen(1);
             std::uniform_real_distribution<scalar> jitter(-0.05, 0.05);
+            List<point> lattice(N);
+            label m = 0;
             for (label i = 0; i < n; ++i)
             {
                 for (label j = 0; j < n; ++j)
                 {
                     for (label k = 0; k < n; ++k)
                     {
-                        dem.addParticle
-                        (
+                        lattice[m++] =
                             spacing*point(i + 0.5, j + 0.5, k + 0.5)
-                          + point(jitter(gen), jitter(gen), jitter(gen)),
-                            1,
-                            rho
-                        );
+                          + point(jitter(gen), jitter(gen), jitter(gen));
                     }
                 }
             }
+            dem.addParticles
+            (
+                lattice, scalarList(N, scalar(1)), rho, boolList(N, true)
+            );
             const scalar dt = 0.2*dem.criticalTimeStep();
             for (label s = 0; s < 50; ++s)
             {

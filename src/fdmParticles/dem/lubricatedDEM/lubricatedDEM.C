@@ -140,6 +140,46 @@ void Foam::fdm::lubricatedDEM::setDelaunayNeighbours(const label interval)
 }
 
 
+Foam::label Foam::fdm::lubricatedDEM::addParticles
+(
+    const UList<point>& x,
+    const UList<scalar>& radius,
+    const scalar density,
+    const UList<bool>& mobile
+)
+{
+    // Every list grown once: appending sphere by sphere would copy each
+    // list for every sphere (minutes at 10^5 spheres)
+    const label start = size();
+    const label n = start + x.size();
+    position_.setSize(n);
+    velocity_.setSize(n, Zero);
+    spin_.setSize(n, Zero);
+    radius_.setSize(n);
+    mass_.setSize(n);
+    inertia_.setSize(n);
+    bodyForce_.setSize(n, Zero);
+    mobile_.setSize(n);
+    displacementSinceSearch_.setSize(n, Zero);
+    loads_.force.setSize(n, Zero);
+    loads_.torque.setSize(n, Zero);
+    loads_.stresslet.setSize(n, Zero);
+    forAll(x, k)
+    {
+        const label i = start + k;
+        const scalar m = density*4.0/3.0*pi*pow3(radius[k]);
+        position_[i] = box_.wrap(x[k]);
+        radius_[i] = radius[k];
+        mass_[i] = m;
+        inertia_[i] = 0.4*m*sqr(radius[k]);
+        mobile_[i] = mobile[k];
+    }
+    pairs_.addParticles(radius);
+    timeSinceSearch_ = GREAT;
+    return start;
+}
+
+
 Foam::label Foam::fdm::lubricatedDEM::addParticle
 (
     const point& x,
@@ -148,23 +188,10 @@ Foam::label Foam::fdm::lubricatedDEM::addParticle
     const bool mobile
 )
 {
-    const label i = size();
-    const scalar m = density*4.0/3.0*pi*pow3(radius);
-    position_.append(box_.wrap(x));
-    velocity_.append(Zero);
-    spin_.append(Zero);
-    radius_.append(radius);
-    mass_.append(m);
-    inertia_.append(0.4*m*sqr(radius));
-    bodyForce_.append(Zero);
-    mobile_.append(mobile);
-    displacementSinceSearch_.append(Zero);
-    loads_.force.append(Zero);
-    loads_.torque.append(Zero);
-    loads_.stresslet.append(Zero);
-    pairs_.addParticle(radius);
-    timeSinceSearch_ = GREAT;
-    return i;
+    return addParticles
+    (
+        List<point>(1, x), scalarList(1, radius), density, boolList(1, mobile)
+    );
 }
 
 

@@ -22,12 +22,14 @@ using Foam::constant::mathematical::pi;
 
 void Foam::fdm::lubricatedDEM::addPairLoads(const scalar dt)
 {
-    loads_.force = bodyForce_;
+    loads_.force = Zero;
     loads_.torque = Zero;
     loads_.stresslet = Zero;
 
     // The steps of a pair interaction, as the FDM cloud runs them; the
-    // velocities relative to the affine flow
+    // velocities relative to the affine flow.  The pair forces add to the
+    // weights one by one
+    pairs_.setExternalForce(bodyForce_);
     pairInteraction& pairs = pairs_;
     const positionStep step(positionStep::euler(dt));
     pairs.update

@@ -33,6 +33,7 @@ Foam::fdm::lubricatedInteraction::lubricatedInteraction
     positions_(nullptr),
     radii_(nullptr),
     box_(nullptr),
+    externalForce_(nullptr),
     stresslet_(nStressParts),
     nInteractions_(0),
     nContacts_(0),
@@ -46,8 +47,15 @@ void Foam::fdm::lubricatedInteraction::resetLoads(const label n)
 {
     pairForce_.setSize(pairs_.size());
     pairForce_ = Zero;
-    force_.setSize(n);
-    force_ = Zero;
+    if (externalForce_)
+    {
+        force_ = *externalForce_;
+    }
+    else
+    {
+        force_.setSize(n);
+        force_ = Zero;
+    }
     torque_.setSize(n);
     torque_ = Zero;
     contactForce_.setSize(n);
@@ -248,16 +256,23 @@ Foam::vector Foam::fdm::lubricatedInteraction::addTwoBodyLoads
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fdm::lubricatedInteraction::addParticle(const scalar radius)
+void Foam::fdm::lubricatedInteraction::addParticles
+(
+    const UList<scalar>& radii
+)
 {
-    maxRadius_ = max(maxRadius_, radius);
-    force_.append(Zero);
-    torque_.append(Zero);
-    contactForce_.append(Zero);
-    contactTorque_.append(Zero);
+    const label n = force_.size() + radii.size();
+    for (const scalar r : radii)
+    {
+        maxRadius_ = max(maxRadius_, r);
+    }
+    force_.setSize(n, Zero);
+    torque_.setSize(n, Zero);
+    contactForce_.setSize(n, Zero);
+    contactTorque_.setSize(n, Zero);
     for (List<symmTensor>& s : stresslet_)
     {
-        s.append(Zero);
+        s.setSize(n, Zero);
     }
 }
 

@@ -180,8 +180,8 @@ Foam::fdm::lubricatedDEM Foam::fdm::createDEM
     forAll(list.position, i)
     {
         mobile[i] = !fixedGroups.found(list.group[i]);
-        dem.addParticle(list.position[i], list.radius[i], rho, mobile[i]);
     }
+    dem.addParticles(list.position, list.radius, rho, mobile);
     setGravity(dem, props, rho, mobile);
     setPressureWall(dem, props, list, mobile);
 

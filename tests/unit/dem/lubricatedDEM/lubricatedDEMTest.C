@@ -255,6 +255,44 @@ TEST(lubricatedDEM, leesEdwardsImagesGiveTheInteriorForce)
 }
 
 
+TEST(lubricatedDEM, spheresAddedTogetherRunAsSpheresAddedOneByOne)
+{
+    // addParticles (setup's bulk addition) gives the spheres of as many
+    // addParticle calls: masses, the fixed flag, zero loads before the
+    // first step, and the same trajectories bitwise
+    fdm::lubricatedDEM oneByOne = randomCloud(1, 40, 5);
+    oneByOne.addParticle(point(7, 7, 7.5), 1, 1e-2, false);
+    boolList mobile(oneByOne.size(), true);
+    mobile.last() = false;
+    fdm::lubricatedDEM together
+    (
+        cube(14), 1, fdm::lubricatedContact(1, 1e4, 1, 0.5, 1e-2, 0.4, 2)
+    );
+    together.addParticles
+    (
+        oneByOne.positions(), oneByOne.radii(), 1e-2, mobile
+    );
+    together.velocities() = oneByOne.velocities();
+    together.spins() = oneByOne.spins();
+    ASSERT_EQ(together.size(), 41);
+    EXPECT_EQ(together.masses(), oneByOne.masses());
+    EXPECT_EQ(together.forces(), List<vector>(41, Zero));
+    EXPECT_EQ(together.stresslets(0), List<symmTensor>(41, Zero));
+
+    for (label i = 0; i < 200; ++i)
+    {
+        oneByOne.step(5e-4);
+        together.step(5e-4);
+    }
+    ASSERT_GT(together.nInteractions(), 0);
+    EXPECT_EQ(together.positions(), oneByOne.positions());
+    EXPECT_EQ(together.spins(), oneByOne.spins());
+    // The fixed sphere moves with the affine flow only
+    EXPECT_EQ(together.velocities().last(), vector::zero);
+    EXPECT_EQ(together.spins().last(), vector::zero);
+}
+
+
 TEST(lubricatedDEM, restartFromTheWrittenStateIsBitwise)
 {
     // Steps of 5e-4, a quarter of the critical step sqrt(m/g)

@@ -268,4 +268,35 @@ TEST(lubricatedInteraction, restartDropsPairsOfTwoFixedSpheres)
 }
 
 
+TEST(lubricatedInteraction, pairForcesAddToTheExternalForceInTurn)
+{
+    // A sphere pressed by two neighbours under a weight: its force is the
+    // weight plus the first pair's force plus the second's, summed in that
+    // order (the order of a DEM that adds each pair force to the loads),
+    // and addSolvedLoads adds it all
+    oneStep s
+    (
+        List<point>({point(5, 5, 5), point(5, 7.001, 5), point(5, 3, 5.2)}),
+        List<scalar>({1, 1, 1.3})
+    );
+    s.U[1] = vector(0.1, -1, 0);
+    s.U[2] = vector(0, 0.7, -0.2);
+    vector pairForce[2];
+    for (label k = 1; k < 3; ++k)
+    {
+        fdm::lubricatedInteraction alone(law());
+        s.run(alone, List<labelPair>({labelPair(0, k)}), 1e-3);
+        pairForce[k - 1] = s.loads.force[0];
+    }
+
+    const List<vector> weight(3, vector(1.0/3, -1e3/7, std::sqrt(2.0)));
+    fdm::lubricatedInteraction pairs(law());
+    pairs.setExternalForce(weight);
+    s.run(pairs, List<labelPair>({labelPair(0, 1), labelPair(0, 2)}), 1e-3);
+    const vector inTurn = (weight[0] + pairForce[0]) + pairForce[1];
+    ASSERT_NE(inTurn, weight[0] + (pairForce[0] + pairForce[1]));
+    EXPECT_EQ(s.loads.force[0], inTurn);
+}
+
+
 // ************************************************************************* //
