@@ -56,6 +56,7 @@ Usage
 #include "schemeEntries.H"
 #include "heapReuse.H"
 #include "planeWalls.H"
+#include "remainingTime.H"
 #include <iomanip>
 #include <sstream>
 
@@ -113,8 +114,9 @@ int main(int argc, char *argv[])
     particles.writeVTK();
 
     Info<< "\nStarting time loop\n" << endl;
-    const scalar clockAtLoopStart = runClock.elapsedTime();
-    scalar clockAtLastStep = clockAtLoopStart;
+    scalar clockAtLastStep = runClock.elapsedTime();
+    // The time left at the cost of the last 200 steps or so
+    fdm::remainingTime timeLeft(clockAtLastStep, runTime.value(), 200);
 
     while (runTime.loop())
     {

@@ -28,15 +28,13 @@ void Foam::fdm::demMonitor::report
     const lubricatedDEM& dem,
     const Time& runTime,
     const clockTime& clock,
-    const scalar startTime,
     const scalar sMax
-) const
+)
 {
     const symmTensor s = totalStress(dem);
     const scalar etaGammaDot =
         dem.model().viscosity()*max(mag(dem.shearRate()), SMALL);
-    const scalar done = runTime.value() - startTime;
-    const scalar left = runTime.endTime().value() - runTime.value();
+    timeLeft_.update(clock.elapsedTime(), runTime.value());
     Info<< "Time = " << runTime.timeName()
         << "  strain " << dem.shearRate()*dem.time()
         << "  eta_r " << s.xy()/etaGammaDot
@@ -51,7 +49,7 @@ void Foam::fdm::demMonitor::report
             << "  wall velocity " << dem.wallVelocity();
     }
     Info
-        << "  left " << label(clock.elapsedTime()*left/max(done, SMALL))
+        << "  left " << label(timeLeft_.seconds(runTime.endTime().value()))
         << " s" << endl;
 }
 

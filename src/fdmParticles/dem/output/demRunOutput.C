@@ -22,9 +22,8 @@ Foam::fdm::demRunOutput::demRunOutput
     series_(runTime, dem),
     particleSeries_(runTime, properties),
     vtk_(runTime, properties.subOrEmptyDict("output")),
-    monitor_(),
+    monitor_(runTime.value()),
     clock_(),
-    startTime_(runTime.value()),
     steps_(0),
     sMax_(0),
     lastReport_(-GREAT)
@@ -55,7 +54,7 @@ void Foam::fdm::demRunOutput::afterStep
     if (clock_.elapsedTime() >= lastReport_ + 10 || last)
     {
         lastReport_ = clock_.elapsedTime();
-        monitor_.report(dem, runTime, clock_, startTime_, sMax_);
+        monitor_.report(dem, runTime, clock_, sMax_);
         sMax_ = 0;
     }
 
