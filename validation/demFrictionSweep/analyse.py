@@ -36,25 +36,29 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from fdmPost.demRheology import (averages, phi_m, model_eta,  # noqa: E402
-                                 model_mu, model_mu_contact,
-                                 model_mu_hydrodynamic, MU1, MU2, I0)
+from fdmPost.demRheology import (averages, article2_phi,  # noqa: E402
+                                 phi_m, model_eta, model_mu,
+                                 model_mu_contact, model_mu_hydrodynamic,
+                                 MU1, MU2, I0)
 from fdmPost.report import write_markdown  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results.dat")
 COLUMNS = ("mu_m", "phiNominal", "cutoff", "phi", "Iv", "mu", "eta_r",
            "eta_rErr", "muContact", "muLubrication", "lambda33")
-# The cutoff column of the Delaunay pairs (run name cutD) and of the
+# The cutoff column of the Delaunay pairs (run name cutD), of the
 # Delaunay pairs with article 2's spheres (cutA: one radius, 5 %
-# polydispersity, roughness 2e-2)
-DELAUNAY, ARTICLE2 = 0, -1
-PAIRS = {"D": DELAUNAY, "A": ARTICLE2}
+# polydispersity, roughness 2e-2) and of those with shearArms radius (cutR)
+DELAUNAY, ARTICLE2, ARTICLE2_RADIUS = 0, -1, -2
+PAIRS = {"D": DELAUNAY, "A": ARTICLE2, "R": ARTICLE2_RADIUS}
+ARTICLE2_ROUGHNESS = 2e-2
 
 
 def pairs_name(cutoff):
     """The pair set of a cutoff column value, for tables and legends."""
     return {DELAUNAY: "Delaunay pairs",
-            ARTICLE2: "Delaunay pairs, article 2's spheres"}.get(
+            ARTICLE2: "Delaunay pairs, article 2's spheres",
+            ARTICLE2_RADIUS: "Delaunay pairs, article 2's spheres, "
+                             "radius arms"}.get(
                 cutoff, "cut-off %ga" % cutoff)
 CONTACT = ("normalContact", "shearContact")
 
@@ -63,7 +67,7 @@ def measure(work):
     """Rows (dicts) of the runs in work."""
     rows = []
     for case in glob.glob(os.path.join(work, "mu*_phi*_cut*")):
-        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D|A)$", case)
+        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D|A|R)$", case)
         try:
             a, _, _, _ = averages(case, 2.0)
         except SystemExit as e:
@@ -147,6 +151,21 @@ def friction_family(rows, lines, cutoff, png):
     return fit
 
 
+def article2_radius_lines(sel, phim):
+    """The rows of article 2's spheres read at article 2's radius
+    (demRheology.article2_phi): eta_r against eq 16 and phi_m there."""
+    out = ["", "Read at article 2's radius, phi' = phi (1 - eps/2)^-3 "
+           "(eps %g):" % ARTICLE2_ROUGHNESS, "",
+           "| phi' | eta_r / eq 16 at phi' | phi' (1 + I_v^1/2) |",
+           "|---|---|---|"]
+    for r in sel:
+        p = float(article2_phi(r["phi"], ARTICLE2_ROUGHNESS))
+        out.append("| %.4f | %.2f | %.4f |"
+                   % (p, r["eta_r"] / model_eta(p, phim),
+                      p * (1 + np.sqrt(r["Iv"]))))
+    return out
+
+
 def phi_family(rows, lines):
     fam = [r for r in rows if r["mu_m"] == 0.4]
     cuts = sorted({r["cutoff"] for r in fam}, reverse=True)
@@ -180,6 +199,8 @@ def phi_family(rows, lines):
                    model_mu_hydrodynamic(r["Iv"], r["phi"]),
                    r["eta_r"], r["eta_rErr"], model_eta(r["phi"], phim),
                    r["phi"] * (1 + np.sqrt(r["Iv"]))))
+        if cut in (ARTICLE2, ARTICLE2_RADIUS):
+            lines += article2_radius_lines(sel, phim)
         if len(sel) >= 4:
             p, cov = curve_fit(model_mu_contact, x,
                                [r["muContact"] for r in sel],

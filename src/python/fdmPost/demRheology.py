@@ -28,6 +28,17 @@ def phi_m(mu_m):
     return 0.6301 - 0.0794 * (1 - np.exp(-mu_m / 0.4032))
 
 
+def article2_phi(phi, roughness):
+    """The volume fraction of article 2's radius for spheres run with this
+    DEM's law (article 1) at phi.  Article 2 puts the asperities inside
+    the radius a: contact on the overlap (eqs 2-5), lubrication on
+    h = u_n + eps a (eqs 6-9).  Article 1 puts them outside: contact at a
+    surface gap eps a, lubrication on that gap.  So article 2's spheres of
+    radius a are article 1's of radius a (1 - eps/2), to O(eps^2), and
+    their volume fraction is phi (1 - eps/2)^-3."""
+    return np.asarray(phi) * (1 - 0.5 * roughness) ** -3
+
+
 def viscous_number(phi, phim):
     """I_v from phi/phi_m = 1/(1 + I_v^(1/2)) (eq 15)."""
     return (phim / phi - 1) ** 2

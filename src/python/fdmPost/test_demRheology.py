@@ -5,8 +5,9 @@ import unittest
 
 import numpy as np
 
-from fdmPost.demRheology import (model_eta, model_lambda33, model_mu, phi_m,
-                                 series_averages, viscous_number)
+from fdmPost.demRheology import (article2_phi, model_eta, model_lambda33,
+                                 model_mu, phi_m, series_averages,
+                                 viscous_number)
 
 
 class ThesisModel(unittest.TestCase):
@@ -33,6 +34,17 @@ class ThesisModel(unittest.TestCase):
             self.assertAlmostEqual(viscous_number(phi, 0.63), iv,
                                    delta=1e-12 + 1e-9 * iv)
             self.assertAlmostEqual(model_eta(phi, 0.63) / eta, 1, delta=2e-3)
+
+    def test_article2_radius(self):
+        # The radius r of this DEM's spheres that article 2's of radius a
+        # are: the lubrication gaps agree at any centre distance d (article
+        # 1: d - 2r; article 2: h = d - 2a + eps a) and contact starts at
+        # 2r + eps r against 2a, to O(eps^2)
+        a, eps, d = 1.0, 2e-2, 2.3
+        r = a * (0.5 / float(article2_phi(0.5, eps))) ** (1 / 3)
+        self.assertAlmostEqual(d - 2 * r, d - 2 * a + eps * a, delta=1e-12)
+        self.assertAlmostEqual(2 * r + eps * r, 2 * a, delta=eps ** 2)
+        self.assertEqual(float(article2_phi(0.5, 0)), 0.5)
 
 
 class SeriesAverages(unittest.TestCase):
