@@ -102,19 +102,30 @@ def merged(new):
     return out
 
 
+def article2_spheres(cutoff):
+    """Whether the runs of a cutoff column value use article 2's spheres,
+    whose volume fraction is read at article 2's radius"""
+    return cutoff in (ARTICLE2, ARTICLE2_RADIUS)
+
+
 def friction_family(rows, lines, cutoff, png):
     sel = [r for r in rows if r["cutoff"] == cutoff
            and r["phiNominal"] in (0.48, 0.52)]
     if not sel:
         return None
+    phi_name = "phi" + ("' (article 2's radius)"
+                        if article2_spheres(cutoff) else "")
     lines += ["## phi_m against the contact friction (%s)"
               % pairs_name(cutoff), "",
-              "| mu_m | phi | I_v | mu | eta_r | phi_m = phi (1 + I_v^1/2) "
-              "| eq 13 | difference |", "|---|---|---|---|---|---|---|---|"]
+              "| mu_m | %s | I_v | mu | eta_r | phi_m = phi (1 + I_v^1/2) "
+              "| eq 13 | difference |" % phi_name,
+              "|---|---|---|---|---|---|---|---|"]
     for r in sel:
-        r["phim"] = r["phi"] * (1 + np.sqrt(r["Iv"]))
+        phi = (float(article2_phi(r["phi"], ARTICLE2_ROUGHNESS))
+               if article2_spheres(cutoff) else r["phi"])
+        r["phim"] = phi * (1 + np.sqrt(r["Iv"]))
         lines.append("| %g | %.4f | %.4g | %.3f | %.1f | %.4f | %.4f | %+.4f |"
-                     % (r["mu_m"], r["phi"], r["Iv"], r["mu"], r["eta_r"],
+                     % (r["mu_m"], phi, r["Iv"], r["mu"], r["eta_r"],
                         r["phim"], phi_m(r["mu_m"]),
                         r["phim"] - phi_m(r["mu_m"])))
     mus = sorted({r["mu_m"] for r in sel})
@@ -199,7 +210,7 @@ def phi_family(rows, lines):
                    model_mu_hydrodynamic(r["Iv"], r["phi"]),
                    r["eta_r"], r["eta_rErr"], model_eta(r["phi"], phim),
                    r["phi"] * (1 + np.sqrt(r["Iv"]))))
-        if cut in (ARTICLE2, ARTICLE2_RADIUS):
+        if article2_spheres(cut):
             lines += article2_radius_lines(sel, phim)
         if len(sel) >= 4:
             p, cov = curve_fit(model_mu_contact, x,
@@ -248,6 +259,7 @@ def main():
              "lubrication parts.", ""]
     friction_family(rows, lines, 2, "phiMax.png")
     friction_family(rows, lines, DELAUNAY, "phiMaxDelaunay.png")
+    friction_family(rows, lines, ARTICLE2_RADIUS, "phiMaxArticle2.png")
     phi_family(rows, lines)
     write_markdown(os.path.join(HERE, "report.md"), lines)
 
