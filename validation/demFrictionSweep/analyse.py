@@ -37,7 +37,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from fdmPost.demRheology import (averages, article2_phi,  # noqa: E402
-                                 phi_m, model_eta, model_mu,
+                                 master_phi_m, phi_m, model_eta, model_mu,
                                  model_mu_contact, model_mu_hydrodynamic,
                                  MU1, MU2, I0)
 from fdmPost.report import write_markdown  # noqa: E402
@@ -123,7 +123,7 @@ def friction_family(rows, lines, cutoff, png):
     for r in sel:
         phi = (float(article2_phi(r["phi"], ARTICLE2_ROUGHNESS))
                if article2_spheres(cutoff) else r["phi"])
-        r["phim"] = phi * (1 + np.sqrt(r["Iv"]))
+        r["phim"] = float(master_phi_m(phi, r["Iv"]))
         lines.append("| %g | %.4f | %.4g | %.3f | %.1f | %.4f | %.4f | %+.4f |"
                      % (r["mu_m"], phi, r["Iv"], r["mu"], r["eta_r"],
                         r["phim"], phi_m(r["mu_m"]),
@@ -173,7 +173,7 @@ def article2_radius_lines(sel, phim):
         p = float(article2_phi(r["phi"], ARTICLE2_ROUGHNESS))
         out.append("| %.4f | %.2f | %.4f |"
                    % (p, r["eta_r"] / model_eta(p, phim),
-                      p * (1 + np.sqrt(r["Iv"]))))
+                      master_phi_m(p, r["Iv"])))
     return out
 
 
@@ -209,7 +209,7 @@ def phi_family(rows, lines):
                    r["muLubrication"],
                    model_mu_hydrodynamic(r["Iv"], r["phi"]),
                    r["eta_r"], r["eta_rErr"], model_eta(r["phi"], phim),
-                   r["phi"] * (1 + np.sqrt(r["Iv"]))))
+                   master_phi_m(r["phi"], r["Iv"])))
         if article2_spheres(cut):
             lines += article2_radius_lines(sel, phim)
         if len(sel) >= 4:

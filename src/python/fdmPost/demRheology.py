@@ -39,6 +39,12 @@ def article2_phi(phi, roughness):
     return np.asarray(phi) * (1 - 0.5 * roughness) ** -3
 
 
+def master_phi_m(phi, iv):
+    """phi_m of a run at phi and I_v through the master curve
+    phi/phi_m = 1/(1 + I_v^(1/2)) (eq 15)."""
+    return np.asarray(phi) * (1 + np.sqrt(iv))
+
+
 def viscous_number(phi, phim):
     """I_v from phi/phi_m = 1/(1 + I_v^(1/2)) (eq 15)."""
     return (phim / phi - 1) ** 2

@@ -5,9 +5,9 @@ import unittest
 
 import numpy as np
 
-from fdmPost.demRheology import (article2_phi, model_eta, model_lambda33,
-                                 model_mu, phi_m, series_averages,
-                                 viscous_number)
+from fdmPost.demRheology import (article2_phi, master_phi_m, model_eta,
+                                 model_lambda33, model_mu, phi_m,
+                                 series_averages, viscous_number)
 
 
 class ThesisModel(unittest.TestCase):
@@ -33,6 +33,8 @@ class ThesisModel(unittest.TestCase):
             phi = 0.63 / (1 + iv ** 0.5)
             self.assertAlmostEqual(viscous_number(phi, 0.63), iv,
                                    delta=1e-12 + 1e-9 * iv)
+            self.assertAlmostEqual(float(master_phi_m(phi, iv)), 0.63,
+                                   delta=1e-12)
             self.assertAlmostEqual(model_eta(phi, 0.63) / eta, 1, delta=2e-3)
 
     def test_article2_radius(self):
