@@ -12,8 +12,11 @@ runs); then
       contact part mu_c, fitted with eq 14's mu_c = mu_1 + (mu_2 - mu_1)/
       (1 + I_0/I_v), and its lubrication part mu_L against eq 14's
       mu_h = I_v (1 - phi)^-5/2; eta_r against eq 16;
+  article 2's spheres with radius arms, every friction: phi_m fitted as
+      article 2 did (demRheology.fit_phi_m over the runs with I_v < 0.15);
 
-writes report.md, phiMax.png and muIv.png here.
+writes report.md, the phiMax*.png and muIv.png here; runs without
+the End line in their log (killed, failed) are skipped.
 
     analyse.py [WORKDIR]
 
@@ -37,6 +40,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from fdmPost.demRheology import (averages, article2_phi,  # noqa: E402
+                                 finished, fit_phi_m,
                                  master_phi_m, phi_m, model_eta, model_mu,
                                  model_mu_contact, model_mu_hydrodynamic,
                                  MU1, MU2, I0)
@@ -51,6 +55,9 @@ COLUMNS = ("mu_m", "phiNominal", "cutoff", "phi", "Iv", "mu", "eta_r",
 DELAUNAY, ARTICLE2, ARTICLE2_RADIUS = 0, -1, -2
 PAIRS = {"D": DELAUNAY, "A": ARTICLE2, "R": ARTICLE2_RADIUS}
 ARTICLE2_ROUGHNESS = 2e-2
+# The small-I_v range of article 2's power law 1 - phi/phi_m ~ I_v^n
+# (10^-4 - 10^-1, section IV.B), with room for the run at 0.13
+SMALL_IV = 0.15
 
 
 def pairs_name(cutoff):
@@ -68,6 +75,11 @@ def measure(work):
     rows = []
     for case in glob.glob(os.path.join(work, "mu*_phi*_cut*")):
         m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D|A|R)$", case)
+        if not finished(case):
+            # A killed run's shorter window must not replace a finished
+            # run's row (it once did)
+            print("skipped %s: not finished (no End line in its log)" % case)
+            continue
         try:
             a, _, _, _ = averages(case, 2.0)
         except SystemExit as e:
@@ -160,6 +172,71 @@ def friction_family(rows, lines, cutoff, png):
     fig.tight_layout()
     fig.savefig(os.path.join(HERE, png), dpi=120)
     return fit
+
+
+def power_law_phi_m(rows, lines, cutoff, png):
+    """phi_m per friction as article 2 fixed it (demRheology.fit_phi_m:
+    phi' = phi_m/(1 + c I_v^n) over every run at that friction, n free),
+    against eq 13; eq 13's form fitted to them.  Plot: phi_m(mu_m) and
+    1 - phi'/phi_m against I_v."""
+    fam = [r for r in rows if r["cutoff"] == cutoff and r["Iv"] < SMALL_IV]
+    mus = [m for m in sorted({r["mu_m"] for r in fam})
+           if sum(r["mu_m"] == m for r in fam) >= 4]
+    if not mus:
+        return
+    lines += ["", "## phi_m fitted as article 2 did (%s)" % pairs_name(cutoff),
+              "", "phi' = phi_m/(1 + c I_v^n) over the runs at one friction "
+              "with I_v < %g (n free; article 2 chose phi_m so that "
+              "1 - phi/phi_m against I_v is one power law at small I_v, "
+              "10^-4 - 10^-1), phi' at article 2's radius; standard errors "
+              "of the fit." % SMALL_IV, "",
+              "| mu_m | runs | phi' | I_v | phi_m fitted | n | eq 13 "
+              "| difference | phi' (1 + I_v^1/2), run nearest jamming |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    fits = []
+    for k, m in enumerate(mus):
+        sel = sorted((r for r in fam if r["mu_m"] == m), key=lambda r: r["Iv"])
+        phi = article2_phi([r["phi"] for r in sel], ARTICLE2_ROUGHNESS)
+        iv = np.array([r["Iv"] for r in sel])
+        (pm, c, n), err = fit_phi_m(phi, iv)
+        fits.append((m, pm, err[0]))
+        lines.append("| %g | %d | %.3f-%.3f | %.2g-%.2g | %.4f ± %.4f "
+                     "| %.2f ± %.2f | %.4f | %+.4f | %.4f |"
+                     % (m, len(sel), phi.min(), phi.max(), iv.min(),
+                        iv.max(), pm, err[0], n, err[2], phi_m(m),
+                        pm - phi_m(m), master_phi_m(phi[0], iv[0])))
+        axes[1].loglog(iv, 1 - phi / pm, "o", color="C%d" % k,
+                       label=r"$\mu_m$ = %g" % m)
+        x = np.logspace(np.log10(iv.min()), np.log10(iv.max()))
+        axes[1].loglog(x, c * x**n / (1 + c * x**n), "-", color="C%d" % k,
+                       lw=0.8)
+    m, pm, err = map(np.array, zip(*fits))
+
+    def form(mu, p0, dp, ms):
+        return p0 - dp * (1 - np.exp(-np.asarray(mu) / ms))
+    mu = np.linspace(0, 1.2, 100)
+    if len(m) >= 4:
+        p, cov = curve_fit(form, m, pm, p0=(0.63, 0.08, 0.4), sigma=err,
+                           absolute_sigma=True)
+        lines += ["", "Eq 13's form fitted to these phi_m (weighted): "
+                  "p0 = %.4f ± %.4f, dp = %.4f ± %.4f, m* = %.3f ± %.3f "
+                  "(article 2: 0.6301, 0.0794, 0.4032)."
+                  % (p[0], np.sqrt(cov[0, 0]), p[1], np.sqrt(cov[1, 1]),
+                     p[2], np.sqrt(cov[2, 2]))]
+        axes[0].plot(mu, form(mu, *p), "k:", label="eq 13 form fitted")
+    axes[0].plot(mu, phi_m(mu), "r--", label="article 2, eq 13")
+    axes[0].errorbar(m, pm, yerr=err, fmt="ko", capsize=3,
+                     label="DEM, fitted power law")
+    axes[0].set_xlabel(r"$\mu_m$")
+    axes[0].set_ylabel(r"$\phi_m$ (article 2's radius)")
+    axes[0].legend(fontsize=8)
+    axes[1].set_xlabel("$I_v$")
+    axes[1].set_ylabel(r"$1 - \phi'/\phi_m$")
+    axes[1].legend(fontsize=8)
+    fig.suptitle(pairs_name(cutoff), fontsize=9)
+    fig.tight_layout()
+    fig.savefig(os.path.join(HERE, png), dpi=120)
 
 
 def article2_radius_lines(sel, phim):
@@ -260,6 +337,7 @@ def main():
     friction_family(rows, lines, 2, "phiMax.png")
     friction_family(rows, lines, DELAUNAY, "phiMaxDelaunay.png")
     friction_family(rows, lines, ARTICLE2_RADIUS, "phiMaxArticle2.png")
+    power_law_phi_m(rows, lines, ARTICLE2_RADIUS, "phiMaxArticle2Fit.png")
     phi_family(rows, lines)
     write_markdown(os.path.join(HERE, "report.md"), lines)
 

@@ -45,6 +45,23 @@ def master_phi_m(phi, iv):
     return np.asarray(phi) * (1 + np.sqrt(iv))
 
 
+def fit_phi_m(phi, iv):
+    """phi_m as article 2 fixed it (section IV.B): the value for which
+    1 - phi/phi_m against I_v is one power law, fitted with its prefactor
+    and exponent, phi = phi_m/(1 + c I_v^n), over runs at one friction.
+    Returns (phi_m, c, n) and their standard errors.  With n fixed at 1/2
+    (master_phi_m, one run) the runs far from jamming of a weakly
+    frictional packing put phi_m too high when n is above 1/2."""
+    from scipy.optimize import curve_fit
+    phi, iv = np.asarray(phi, float), np.asarray(iv, float)
+    if len(phi) < 4:
+        raise ValueError("fit_phi_m needs at least 4 runs (3 parameters)")
+    start = (master_phi_m(phi, iv)[np.argmin(iv)], 1.0, 0.5)
+    p, cov = curve_fit(lambda i, pm, c, n: pm / (1 + c * i**n), iv, phi,
+                       p0=start, maxfev=20000)
+    return p, np.sqrt(np.diag(cov))
+
+
 def viscous_number(phi, phim):
     """I_v from phi/phi_m = 1/(1 + I_v^(1/2)) (eq 15)."""
     return (phim / phi - 1) ** 2
@@ -134,6 +151,18 @@ def series_header(path):
     eta = float(head.split("viscosity")[1].split(",")[0])
     rate = float(head.split("shear rate")[1])
     return eta, rate
+
+
+def finished(case):
+    """Whether lubricatedDEMFoam ran to its end time in case: the last
+    line of its log that is not blank is 'End: ...'.  A killed or failed run averages over a
+    shorter window and must not stand in for a finished one."""
+    log = os.path.join(case, "log.lubricatedDEMFoam")
+    if not os.path.isfile(log):
+        return False
+    with open(log) as f:
+        lines = [line for line in f.read().splitlines() if line.strip()]
+    return bool(lines) and lines[-1].startswith("End:")
 
 
 def averages(case, start_strain, blocks=5):
