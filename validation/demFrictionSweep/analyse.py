@@ -47,6 +47,7 @@ from fdmPost.demRheology import (averages, article2_phi,  # noqa: E402
 from fdmPost.report import write_markdown  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results.dat")
+SENSITIVITY = os.path.join(HERE, "sensitivity.dat")
 COLUMNS = ("mu_m", "phiNominal", "cutoff", "phi", "Iv", "mu", "eta_r",
            "eta_rErr", "muContact", "muLubrication", "lambda33")
 # The cutoff column of the Delaunay pairs (run name cutD), of the
@@ -74,7 +75,8 @@ def measure(work):
     """Rows (dicts) of the runs in work."""
     rows = []
     for case in glob.glob(os.path.join(work, "mu*_phi*_cut*")):
-        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D|A|R)$", case)
+        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D|A|R)"
+                      r"(?:_([a-z][\w.]*))?$", case)
         if not finished(case):
             # A killed run's shorter window must not replace a finished
             # run's row (it once did)
@@ -86,31 +88,43 @@ def measure(work):
             print("skipped %s: %s" % (case, e))
             continue
         contact = sum(a["share"][p] for p in CONTACT)
-        rows.append(dict(zip(COLUMNS, (
+        row = dict(zip(COLUMNS, (
             float(m.group(1)), float(m.group(2)),
             PAIRS.get(m.group(3)) if m.group(3) in PAIRS
             else float(m.group(3)),
             a["phi"], a["Iv"], a["mu"], a["eta_r"][0], a["eta_r"][1],
-            contact * a["mu"], (1 - contact) * a["mu"], a["lambda33"]))))
+            contact * a["mu"], (1 - contact) * a["mu"], a["lambda33"])))
+        row["variant"] = m.group(4)
+        rows.append(row)
     return rows
 
 
-def merged(new):
-    """results.dat rows with the new ones replacing equal keys."""
+def merged(new, path=RESULTS, variants=False):
+    """The rows of path (results.dat, or with variants sensitivity.dat,
+    whose first column names the variant) with the new ones replacing
+    equal keys."""
+    columns = (("variant",) if variants else ()) + COLUMNS
     rows = {}
-    if os.path.exists(RESULTS):
-        for v in np.loadtxt(RESULTS, ndmin=2):
-            r = dict(zip(COLUMNS, v))
-            rows[r["mu_m"], r["phiNominal"], r["cutoff"]] = r
+    if os.path.exists(path):
+        for line in open(path):
+            if not line.startswith("#"):
+                v = line.split()
+                r = dict(zip(COLUMNS, map(float, v[len(columns) -
+                                               len(COLUMNS):])))
+                r["variant"] = v[0] if variants else None
+                rows[r["variant"], r["mu_m"], r["phiNominal"],
+                     r["cutoff"]] = r
     for r in new:
-        rows[r["mu_m"], r["phiNominal"], r["cutoff"]] = r
-    out = sorted(rows.values(),
-                 key=lambda r: (r["cutoff"], r["mu_m"], r["phiNominal"]))
-    with open(RESULTS, "w") as f:
-        f.write("# " + " ".join(COLUMNS) + "  (averages over strain 2-5;"
-                " analyse.py)\n")
+        if (r["variant"] is not None) == variants:
+            rows[r["variant"], r["mu_m"], r["phiNominal"], r["cutoff"]] = r
+    out = sorted(rows.values(), key=lambda r: (
+        r["variant"] or "", r["cutoff"], r["mu_m"], r["phiNominal"]))
+    with open(path, "w") as f:
+        f.write("# " + " ".join(columns) + "  (averages over strain 2 to"
+                " the end; analyse.py)\n")
         for r in out:
-            f.write(" ".join("%.6g" % r[c] for c in COLUMNS) + "\n")
+            f.write(" ".join(([r["variant"]] if variants else [])
+                             + ["%.6g" % r[c] for c in COLUMNS]) + "\n")
     return out
 
 
@@ -326,8 +340,46 @@ def phi_family(rows, lines):
     fig.savefig(os.path.join(HERE, "muIv.png"), dpi=120)
 
 
+VARIANTS = {"box24": "24 a cell (16 a)", "kt0.3": "k_t/g 0.3 (0.5)",
+            "kt2": "k_t/g 2 (0.5)", "g1e7": "stiffness 1e7 (1e6), step / 10^1/2",
+            "strain10": "strain 2-10 (2-5)"}
+
+
+def sensitivity(rows, variants, lines):
+    """The article2sensitivity runs beside the run they change."""
+    if not variants:
+        return
+    base = {(r["mu_m"], r["phiNominal"], r["cutoff"]): r for r in rows}
+    lines += ["", "## One change at a time (%s)" % pairs_name(ARTICLE2_RADIUS),
+              "", "phi' at article 2's radius; eq 14 at the run's I_v, eq 16 "
+              "at its phi' (phi_m 0.5801).", "",
+              "| run | I_v | mu | eq 14 | mu_c | eq 14's mu_c | eta_r "
+              "| eta_r / eq 16 | lambda_33 |",
+              "|---|---|---|---|---|---|---|---|---|"]
+    phim = phi_m(0.4)
+    shown = []
+    for r in variants:
+        b = base.get((r["mu_m"], r["phiNominal"], r["cutoff"]))
+        runs = [(VARIANTS.get(r["variant"], r["variant"]), r)]
+        if b is not None and b not in shown:
+            shown.append(b)
+            runs.insert(0, ("mu_m %g, phi %g, as above" % (b["mu_m"],
+                                                          b["phiNominal"]), b))
+        for name, x in runs:
+            p = float(article2_phi(x["phi"], ARTICLE2_ROUGHNESS))
+            lines.append("| %s | %.4g | %.3f | %.3f | %.3f | %.3f "
+                         "| %.1f ± %.1f | %.2f | %.3f |"
+                         % (name, x["Iv"], x["mu"], model_mu(x["Iv"], phim),
+                            x["muContact"], model_mu_contact(x["Iv"]),
+                            x["eta_r"],
+                            x["eta_rErr"], x["eta_r"] / model_eta(p, phim),
+                            x["lambda33"]))
+
+
 def main():
-    rows = merged(measure(sys.argv[1]) if len(sys.argv) > 1 else [])
+    new = measure(sys.argv[1]) if len(sys.argv) > 1 else []
+    rows = merged(new)
+    variants = merged(new, SENSITIVITY, variants=True)
     lines = ["# Simple-shear sweeps against thesis 2, article 2", "",
              "Generated by `analyse.py` (`Allrun`): tri-periodic Lees-Edwards "
              "cell of tutorials/lubricatedShear (333 bidisperse spheres "
@@ -339,6 +391,7 @@ def main():
     friction_family(rows, lines, ARTICLE2_RADIUS, "phiMaxArticle2.png")
     power_law_phi_m(rows, lines, ARTICLE2_RADIUS, "phiMaxArticle2Fit.png")
     phi_family(rows, lines)
+    sensitivity(rows, variants, lines)
     write_markdown(os.path.join(HERE, "report.md"), lines)
 
 
