@@ -52,9 +52,11 @@ COLUMNS = ("mu_m", "phiNominal", "cutoff", "phi", "Iv", "mu", "eta_r",
            "eta_rErr", "muContact", "muLubrication", "lambda33")
 # The cutoff column of the Delaunay pairs (run name cutD), of the
 # Delaunay pairs with article 2's spheres (cutA: one radius, 5 %
-# polydispersity, roughness 2e-2) and of those with shearArms radius (cutR)
-DELAUNAY, ARTICLE2, ARTICLE2_RADIUS = 0, -1, -2
-PAIRS = {"D": DELAUNAY, "A": ARTICLE2, "R": ARTICLE2_RADIUS}
+# polydispersity, roughness 2e-2), of those with shearArms radius (cutR)
+# and of those with article 2's law (cutL: asperities inside)
+DELAUNAY, ARTICLE2, ARTICLE2_RADIUS, ARTICLE2_LAW = 0, -1, -2, -3
+PAIRS = {"D": DELAUNAY, "A": ARTICLE2, "R": ARTICLE2_RADIUS,
+         "L": ARTICLE2_LAW}
 ARTICLE2_ROUGHNESS = 2e-2
 # The small-I_v range of article 2's power law 1 - phi/phi_m ~ I_v^n
 # (10^-4 - 10^-1, section IV.B), with room for the run at 0.13
@@ -66,7 +68,9 @@ def pairs_name(cutoff):
     return {DELAUNAY: "Delaunay pairs",
             ARTICLE2: "Delaunay pairs, article 2's spheres",
             ARTICLE2_RADIUS: "Delaunay pairs, article 2's spheres, "
-                             "radius arms"}.get(
+                             "radius arms",
+            ARTICLE2_LAW: "article 2's law (asperities inside), Delaunay "
+                          "pairs, radius arms"}.get(
                 cutoff, "cut-off %ga" % cutoff)
 CONTACT = ("normalContact", "shearContact")
 
@@ -75,7 +79,7 @@ def measure(work):
     """Rows (dicts) of the runs in work."""
     rows = []
     for case in glob.glob(os.path.join(work, "mu*_phi*_cut*")):
-        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D|A|R)"
+        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D|A|R|L)"
                       r"(?:_([a-z][\w.]*))?$", case)
         if not finished(case):
             # A killed run's shorter window must not replace a finished
@@ -253,6 +257,35 @@ def power_law_phi_m(rows, lines, cutoff, png):
     fig.savefig(os.path.join(HERE, png), dpi=120)
 
 
+def law_against_mapping(rows, lines):
+    """Article 2's law (asperities inside) against this DEM's law read at
+    article 2's radius, at the same phi' and friction."""
+    law = [r for r in rows if r["cutoff"] == ARTICLE2_LAW]
+    if not law:
+        return
+    mapped = [r for r in rows if r["cutoff"] == ARTICLE2_RADIUS]
+    lines += ["", "## Article 2's law against the radius mapping", "",
+              "Each run with asperities inside (contact on the overlap, "
+              "lubrication on u_n + eps a) beside the radius-arms run whose "
+              "phi' = phi (1 - eps/2)^-3 is its phi (within 1e-3: whole spheres).", "",
+              "| mu_m | phi' | I_v law / mapped | mu law / mapped "
+              "| mu_c law / mapped | eta_r law / mapped | eta_r / eq 16 law "
+              "|", "|---|---|---|---|---|---|---|"]
+    for r in sorted(law, key=lambda r: (r["mu_m"], r["phiNominal"])):
+        twin = [q for q in mapped if q["mu_m"] == r["mu_m"] and abs(
+            float(article2_phi(q["phi"], ARTICLE2_ROUGHNESS)) - r["phi"])
+            < 1e-3]
+        if not twin:
+            continue
+        q = twin[0]
+        lines.append("| %g | %.4f | %.4g / %.4g | %.3f / %.3f | %.3f / %.3f "
+                     "| %.1f ± %.1f / %.1f ± %.1f | %.2f |"
+                     % (r["mu_m"], r["phi"], r["Iv"], q["Iv"], r["mu"],
+                        q["mu"], r["muContact"], q["muContact"], r["eta_r"],
+                        r["eta_rErr"], q["eta_r"], q["eta_rErr"],
+                        r["eta_r"] / model_eta(r["phi"], phi_m(r["mu_m"]))))
+
+
 def article2_radius_lines(sel, phim):
     """The rows of article 2's spheres read at article 2's radius
     (demRheology.article2_phi): eta_r against eq 16 and phi_m there."""
@@ -392,6 +425,7 @@ def main():
     power_law_phi_m(rows, lines, ARTICLE2_RADIUS, "phiMaxArticle2Fit.png")
     phi_family(rows, lines)
     sensitivity(rows, variants, lines)
+    law_against_mapping(rows, lines)
     write_markdown(os.path.join(HERE, "report.md"), lines)
 
 

@@ -17,6 +17,13 @@ Foam::fdm::lubricatedContact::shearArmsNames
     {shearArms::radius, "radius"},
 });
 
+const Foam::Enum<Foam::fdm::lubricatedContact::asperities>
+Foam::fdm::lubricatedContact::asperitiesNames
+({
+    {asperities::outside, "outside"},
+    {asperities::inside, "inside"},
+});
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::fdm::lubricatedContact::gapUpdate
@@ -63,7 +70,8 @@ Foam::fdm::lubricatedContact::lubricatedContact
     const scalar roughness,
     const scalar friction,
     const scalar cutoff,
-    const shearArms arms
+    const shearArms arms,
+    const asperities where
 )
 :
     viscosity_(viscosity),
@@ -73,7 +81,8 @@ Foam::fdm::lubricatedContact::lubricatedContact
     roughness_(roughness),
     friction_(friction),
     cutoff_(cutoff),
-    arms_(arms)
+    arms_(arms),
+    asperities_(where)
 {}
 
 
@@ -85,7 +94,7 @@ Foam::fdm::lubricatedPairState Foam::fdm::lubricatedContact::start
     const scalar meanRadius
 ) const
 {
-    const scalar u = max(centreGap/meanRadius, 1e-12);
+    const scalar u = max(centreGap/meanRadius + gapShift(), 1e-12);
     return {std::log(u), u < roughness_, Zero};
 }
 
@@ -136,7 +145,7 @@ Foam::scalar Foam::fdm::lubricatedContact::normalStep
     // Implicit gap update (A.5-A.7), split at a contact change
     const scalar a = m.meanRadius;
     const scalar eps = roughness_;
-    const scalar un = m.centreGap/a;
+    const scalar un = m.centreGap/a + gapShift();
     const scalar kRatio = stiffnessRatio_;
 
     scalar logU = state.logGap;

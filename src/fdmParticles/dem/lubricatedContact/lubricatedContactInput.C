@@ -28,7 +28,7 @@ Foam::fdm::lubricatedContact fromDictionary(const Foam::dictionary& dict)
         {
             "viscosity", "stiffness", "stiffnessRatio",
             "tangentialStiffness", "roughness", "friction", "cutoff",
-            "shearArms", "lubrication", "table"
+            "shearArms", "asperities", "lubrication", "table"
         },
         "lubricatedContact block"
     );
@@ -66,6 +66,10 @@ Foam::fdm::lubricatedContact fromDictionary(const Foam::dictionary& dict)
         lubricatedContact::shearArmsNames.lookupOrDefault
         (
             "shearArms", dict, lubricatedContact::shearArms::contactPoint
+        ),
+        lubricatedContact::asperitiesNames.lookupOrDefault
+        (
+            "asperities", dict, lubricatedContact::asperities::outside
         )
     );
 
@@ -110,6 +114,13 @@ void Foam::fdm::lubricatedContact::useTwoSphereHydrodynamics
     const fileName& table
 )
 {
+    if (asperities_ == asperities::inside)
+    {
+        FatalErrorInFunction
+            << "asperities inside is article 2's law with the thesis forms;"
+            << " lubrication twoSphere needs asperities outside (its gap is"
+            << " the surface gap)" << exit(FatalError);
+    }
     // The functions freeze where the asperities touch (gap floored at the
     // roughness, and at the table's first point for smooth spheres)
     twoBody_ = std::make_shared<const twoSphereResistance>

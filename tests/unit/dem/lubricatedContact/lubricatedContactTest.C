@@ -2,6 +2,7 @@
 
 #include "lubricatedContact.H"
 #include "unitTestHelpers.H"
+#include "lubricatedContactInputs.H"
 #include "mathematicalConstants.H"
 
 #include <gtest/gtest.h>
@@ -17,17 +18,6 @@ namespace
 fdm::lubricatedContact model(const scalar eps, const scalar g = 1e4)
 {
     return fdm::lubricatedContact(1, g, 1, 0.5, eps, 0.4, 2);
-}
-
-// The required keywords of the lubricatedContact dictionary
-dictionary inputs(const scalar friction)
-{
-    dictionary d;
-    d.add("viscosity", 1.0);
-    d.add("stiffness", 1e4);
-    d.add("roughness", 1e-3);
-    d.add("friction", friction);
-    return d;
 }
 
 fdm::lubricatedPairMotion normalMotion(const scalar un)
@@ -266,44 +256,84 @@ TEST(lubricatedContact, surfaceVelocityIsFrameInvariantWithEitherArms)
 }
 
 
-TEST(lubricatedContact, shearArmsKeywordListsTheChoices)
+TEST(lubricatedContact, asperitiesInsideTouchOnTheOverlap)
 {
-    FatalIOError.throwExceptions();
-    dictionary d(inputs(0.2));
-    d.add("shearArms", "radius");
-    EXPECT_EQ
+    // Article 2 (eqs 2-9): contact on the overlap u_n < 0, lubrication on
+    // h = u_n + eps a.  Held at an overlap delta the asperity spring k_n in
+    // series with the bulk g (k_n = g here) carries -g delta/2; held at a
+    // gap delta < eps a the spheres do not touch (they do with the
+    // asperities outside)
+    const scalar eps = 1e-2, delta = 2e-3, g = 1e4;
+    const fdm::lubricatedContact inside
     (
-        fdm::lubricatedContact(d).arms(),
-        fdm::lubricatedContact::shearArms::radius
+        1, g, 1, 0.5, eps, 0.4, 2,
+        fdm::lubricatedContact::shearArms::contactPoint,
+        fdm::lubricatedContact::asperities::inside
     );
-    d.set("shearArms", "centre");
-    try
+    const fdm::lubricatedContact outside = model(eps, g);
+    EXPECT_EQ(inside.gapShift(), eps);
+    EXPECT_EQ(outside.gapShift(), 0);
+
+    fdm::lubricatedPairState pressed = inside.start(0.02, 1);
+    fdm::lubricatedPairLoads f{};
+    for (label i = 0; i < 2000; ++i)
     {
-        fdm::lubricatedContact m(d);
-        FAIL() << "unknown shearArms accepted";
+        f = inside.step(normalMotion(-delta), 1e-2, pressed);
     }
-    catch (const Foam::error& e)
+    EXPECT_TRUE(pressed.contact);
+    EXPECT_NEAR(std::exp(pressed.logGap), eps - 0.5*delta, 1e-12);
+    EXPECT_NEAR(f.normalContact, -0.5*g*delta, 1e-8);
+
+    fdm::lubricatedPairState apart = inside.start(0.02, 1);
+    fdm::lubricatedPairState touching = outside.start(0.02, 1);
+    for (label i = 0; i < 2000; ++i)
     {
-        const std::string msg(e.message());
-        EXPECT_NE(msg.find("centre"), std::string::npos);
-        EXPECT_NE(msg.find("contactPoint"), std::string::npos);
+        f = inside.step(normalMotion(delta), 1e-2, apart);
+        outside.step(normalMotion(delta), 1e-2, touching);
     }
+    EXPECT_FALSE(apart.contact);
+    EXPECT_NEAR(std::exp(apart.logGap), delta + eps, 1e-12);
+    EXPECT_EQ(f.normalContact, 0);
+    EXPECT_TRUE(touching.contact);
 }
 
 
-TEST(lubricatedContact, badInputNamesTheKeyword)
+TEST(lubricatedContact, asperitiesInsideRunTheLawOnTheShiftedGap)
 {
-    FatalIOError.throwExceptions();
-    const dictionary d(inputs(-0.2));
-    try
+    // The same law at the centre gap u_n + eps a, prefactors on a: an
+    // approaching pair's loads equal the outside law's at the shifted gap
+    const scalar eps = 2e-2;
+    const fdm::lubricatedContact inside
+    (
+        1, 1e4, 1, 0.5, eps, 0.4, 2,
+        fdm::lubricatedContact::shearArms::radius,
+        fdm::lubricatedContact::asperities::inside
+    );
+    const fdm::lubricatedContact outside
+    (
+        1, 1e4, 1, 0.5, eps, 0.4, 2, fdm::lubricatedContact::shearArms::radius
+    );
+    fdm::lubricatedPairState a = inside.start(0.1, 1);
+    fdm::lubricatedPairState b = outside.start(0.1 + eps, 1);
+    for (label i = 0; i < 300; ++i)
     {
-        fdm::lubricatedContact m(d);
-        FAIL() << "negative friction accepted";
+        // to an overlap of 0.018 a, then held: contact for article 2 once
+        // h < eps a
+        const scalar un = max(0.1 - 2e-3*i, -0.018);
+        fdm::lubricatedPairMotion m{vector(0, 1, 0), un, 1,
+            vector(0.3, -0.1, 0), vector(0, 0, 0.2), vector(0, 0, 0.1)};
+        const fdm::lubricatedPairLoads fa = inside.step(m, 1e-3, a);
+        m.centreGap += eps;
+        const fdm::lubricatedPairLoads fb = outside.step(m, 1e-3, b);
+        EXPECT_NEAR(a.logGap, b.logGap, 1e-12);
+        EXPECT_EQ(a.contact, b.contact);
+        EXPECT_NEAR(fa.normalContact, fb.normalContact, 1e-9);
+        EXPECT_NEAR(fa.normalLubrication, fb.normalLubrication, 1e-9);
+        EXPECT_LT(mag(fa.shearContact - fb.shearContact), 1e-9);
+        EXPECT_LT(mag(fa.shearLubrication - fb.shearLubrication), 1e-9);
+        EXPECT_NEAR(fa.rollingDamping, fb.rollingDamping, 1e-9);
     }
-    catch (const Foam::error& e)
-    {
-        EXPECT_NE(std::string(e.message()).find("friction"), std::string::npos);
-    }
+    EXPECT_TRUE(a.contact);
 }
 
 
@@ -311,10 +341,10 @@ TEST(lubricatedContact, twoSphereLubricationReplacesTheThesisForms)
 {
     // lubrication twoSphere: the squeeze stays, the tangential dashpot and
     // the rolling and twisting torques go to the two-body hydrodynamics
-    dictionary d(inputs(0.4));
+    dictionary d(unitTest::lubricatedContactInputs(0.4));
     d.add("lubrication", "twoSphere");
     const fdm::lubricatedContact twoSphere(d);
-    const fdm::lubricatedContact thesis(inputs(0.4));
+    const fdm::lubricatedContact thesis(unitTest::lubricatedContactInputs(0.4));
     ASSERT_TRUE(twoSphere.twoSphereHydrodynamics());
     EXPECT_FALSE(thesis.twoSphereHydrodynamics());
     EXPECT_EQ(twoSphere.lubricationName(), "twoSphere");
@@ -336,25 +366,4 @@ TEST(lubricatedContact, twoSphereLubricationReplacesTheThesisForms)
 }
 
 
-TEST(lubricatedContact, lubricationKeywordIsChecked)
-{
-    auto messageOf = [](const dictionary& d)
-    {
-        return unitTest::errorOf([&d]() { fdm::lubricatedContact m(d); });
-    };
-    dictionary misspelt(inputs(0.4));
-    misspelt.add("lubrication", "twoSpheres");
-    EXPECT_NE(messageOf(misspelt).find("twoSphere"), std::string::npos)
-        << messageOf(misspelt);
-
-    dictionary tableWithThesis(inputs(0.4));
-    tableWithThesis.add("table", "somewhere");
-    EXPECT_NE(messageOf(tableWithThesis).find("twoSphere only"),
-        std::string::npos) << messageOf(tableWithThesis);
-
-    dictionary farCutoff(inputs(0.4));
-    farCutoff.add("lubrication", "twoSphere");
-    farCutoff.add("cutoff", 12.0);
-    EXPECT_NE(messageOf(farCutoff).find("allowed cutoff <= 10"),
-        std::string::npos) << messageOf(farCutoff);
-}
+// ************************************************************************* //
