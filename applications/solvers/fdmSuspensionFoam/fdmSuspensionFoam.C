@@ -116,7 +116,10 @@ int main(int argc, char *argv[])
     Info<< "\nStarting time loop\n" << endl;
     scalar clockAtLastStep = runClock.elapsedTime();
     // The time left at the cost of the last 200 steps or so
-    fdm::remainingTime timeLeft(clockAtLastStep, runTime.value(), 200);
+    fdm::remainingTime timeLeft
+    (
+        clockAtLastStep, runTime.elapsedCpuTime(), runTime.value(), 200
+    );
 
     while (runTime.loop())
     {

@@ -34,7 +34,10 @@ void Foam::fdm::demMonitor::report
     const symmTensor s = totalStress(dem);
     const scalar etaGammaDot =
         dem.model().viscosity()*max(mag(dem.shearRate()), SMALL);
-    timeLeft_.update(clock.elapsedTime(), runTime.value());
+    timeLeft_.update
+    (
+        clock.elapsedTime(), runTime.elapsedCpuTime(), runTime.value()
+    );
     Info<< "Time = " << runTime.timeName()
         << "  strain " << dem.shearRate()*dem.time()
         << "  eta_r " << s.xy()/etaGammaDot

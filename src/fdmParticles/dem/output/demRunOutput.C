@@ -22,7 +22,7 @@ Foam::fdm::demRunOutput::demRunOutput
     series_(runTime, dem),
     particleSeries_(runTime, properties),
     vtk_(runTime, properties.subOrEmptyDict("output")),
-    monitor_(runTime.value()),
+    monitor_(runTime.value(), runTime.elapsedCpuTime()),
     clock_(),
     steps_(0),
     sMax_(0),
