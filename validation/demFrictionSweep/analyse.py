@@ -59,7 +59,7 @@ PAIRS = {"D": DELAUNAY, "A": ARTICLE2, "R": ARTICLE2_RADIUS,
          "L": ARTICLE2_LAW}
 ARTICLE2_ROUGHNESS = 2e-2
 # The small-I_v range of article 2's power law 1 - phi/phi_m ~ I_v^n
-# (10^-4 - 10^-1, section IV.B), with room for the run at 0.13
+# (10^-4 - 10^-1), with room for the run at 0.13
 SMALL_IV = 0.15
 
 
@@ -267,7 +267,8 @@ def law_against_mapping(rows, lines):
     lines += ["", "## Article 2's law against the radius mapping", "",
               "Each run with asperities inside (contact on the overlap, "
               "lubrication on u_n + eps a) beside the radius-arms run whose "
-              "phi' = phi (1 - eps/2)^-3 is its phi (within 1e-3: whole spheres).", "",
+              "phi' = phi (1 - eps/2)^-3 is its phi (within 1e-3: whole "
+              "spheres).", "",
               "| mu_m | phi' | I_v law / mapped | mu law / mapped "
               "| mu_c law / mapped | eta_r law / mapped | eta_r / eq 16 law "
               "|", "|---|---|---|---|---|---|---|"]
@@ -374,7 +375,8 @@ def phi_family(rows, lines):
 
 
 VARIANTS = {"box24": "24 a cell (16 a)", "kt0.3": "k_t/g 0.3 (0.5)",
-            "kt2": "k_t/g 2 (0.5)", "g1e7": "stiffness 1e7 (1e6), step / 10^1/2",
+            "kt2": "k_t/g 2 (0.5)",
+            "g1e7": "stiffness 1e7 (1e6), step / 10^1/2",
             "strain10": "strain 2-10 (2-5)"}
 
 

@@ -46,7 +46,7 @@ def master_phi_m(phi, iv):
 
 
 def fit_phi_m(phi, iv):
-    """phi_m as article 2 fixed it (section IV.B): the value for which
+    """phi_m as article 2 fixed it: the value for which
     1 - phi/phi_m against I_v is one power law, fitted with its prefactor
     and exponent, phi = phi_m/(1 + c I_v^n), over runs at one friction.
     Returns (phi_m, c, n) and their standard errors.  With n fixed at 1/2
@@ -155,8 +155,9 @@ def series_header(path):
 
 def finished(case):
     """Whether lubricatedDEMFoam ran to its end time in case: the last
-    line of its log that is not blank is 'End: ...'.  A killed or failed run averages over a
-    shorter window and must not stand in for a finished one."""
+    line of its log that is not blank is 'End: ...'.  A killed or failed
+    run averages over a shorter window and must not stand in for a
+    finished one."""
     log = os.path.join(case, "log.lubricatedDEMFoam")
     if not os.path.isfile(log):
         return False
