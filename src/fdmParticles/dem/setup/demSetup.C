@@ -194,6 +194,8 @@ Foam::fdm::lubricatedDEM Foam::fdm::createDEM
         << "    roughness " << m.roughness() << ", friction "
         << m.friction() << ", cutoff " << m.cutoff() << " a, shearArms "
         << fdm::lubricatedContact::shearArmsNames[m.arms()]
+        << ", asperities "
+        << fdm::lubricatedContact::asperitiesNames[m.asperitiesPlace()]
         << ", lubrication " << m.lubricationName() << nl
         << "    lubricated pairs: ";
     if (dem.delaunayInterval() > 0)
