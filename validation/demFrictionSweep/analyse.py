@@ -377,7 +377,8 @@ def phi_family(rows, lines):
 VARIANTS = {"box24": "24 a cell (16 a)", "kt0.3": "k_t/g 0.3 (0.5)",
             "kt2": "k_t/g 2 (0.5)",
             "g1e7": "stiffness 1e7 (1e6), step / 10^1/2",
-            "strain10": "strain 2-10 (2-5)"}
+            "strain10": "strain 2-10 (2-5)",
+            "noTorques": "no rolling and twisting torques"}
 
 
 def sensitivity(rows, variants, lines):

@@ -82,7 +82,8 @@ Foam::fdm::lubricatedContact::lubricatedContact
     friction_(friction),
     cutoff_(cutoff),
     arms_(arms),
-    asperities_(where)
+    asperities_(where),
+    torques_(true)
 {}
 
 
@@ -276,7 +277,7 @@ Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
 
     // Rolling and twisting resistance while u <= a (A.3); twoSphere: in
     // the two-body hydrodynamics
-    if (u <= 1 && !twoBody_)
+    if (u <= 1 && !twoBody_ && torques_)
     {
         const scalar logInv = -state.logGap;
         loads.rollingDamping =

@@ -28,7 +28,7 @@ Foam::fdm::lubricatedContact fromDictionary(const Foam::dictionary& dict)
         {
             "viscosity", "stiffness", "stiffnessRatio",
             "tangentialStiffness", "roughness", "friction", "cutoff",
-            "shearArms", "asperities", "lubrication", "table"
+            "shearArms", "asperities", "torques", "lubrication", "table"
         },
         "lubricatedContact block"
     );
@@ -72,6 +72,13 @@ Foam::fdm::lubricatedContact fromDictionary(const Foam::dictionary& dict)
             "asperities", dict, lubricatedContact::asperities::outside
         )
     );
+
+    const word torques(dict.getOrDefault<word>("torques", "thesis"));
+    checkChoice(dict, "torques", torques, {"thesis", "none"});
+    if (torques == "none")
+    {
+        law.dropTorques();
+    }
 
     const word lubrication(dict.getOrDefault<word>("lubrication", "thesis"));
     checkChoice(dict, "lubrication", lubrication, {"thesis", "twoSphere"});

@@ -196,6 +196,7 @@ Foam::fdm::lubricatedDEM Foam::fdm::createDEM
         << fdm::lubricatedContact::shearArmsNames[m.arms()]
         << ", asperities "
         << fdm::lubricatedContact::asperitiesNames[m.asperitiesPlace()]
+        << ", torques " << (m.torques() ? "thesis" : "none")
         << ", lubrication " << m.lubricationName() << nl
         << "    lubricated pairs: ";
     if (dem.delaunayInterval() > 0)

@@ -67,6 +67,37 @@ TEST(lubricatedContact, asperitiesKeywordListsTheChoices)
 }
 
 
+TEST(lubricatedContact, torquesNoneLeavesOutRollingAndTwisting)
+{
+    // A pair at u = 0.1 a (within one radius): damping with the thesis'
+    // torques, none without; a misspelt choice is named
+    dictionary d(unitTest::lubricatedContactInputs(0.2));
+    const fdm::lubricatedPairMotion m{vector(0, 1, 0), 0.1, 1, Zero, Zero,
+        Zero};
+    fdm::lubricatedContact thesis(d);
+    fdm::lubricatedPairState s = thesis.start(0.1, 1);
+    const fdm::lubricatedPairLoads with = thesis.step(m, 1e-3, s);
+    EXPECT_TRUE(thesis.torques());
+    EXPECT_GT(with.rollingDamping, 0);
+    EXPECT_GT(with.twistingDamping, 0);
+
+    d.add("torques", "none");
+    fdm::lubricatedContact none(d);
+    s = none.start(0.1, 1);
+    const fdm::lubricatedPairLoads without = none.step(m, 1e-3, s);
+    EXPECT_FALSE(none.torques());
+    EXPECT_EQ(without.rollingDamping, 0);
+    EXPECT_EQ(without.twistingDamping, 0);
+    EXPECT_EQ(without.normalLubrication, with.normalLubrication);
+
+    d.set("torques", "off");
+    const std::string msg =
+        unitTest::errorOf([&d]() { fdm::lubricatedContact bad(d); });
+    EXPECT_NE(msg.find("torques"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("none"), std::string::npos) << msg;
+}
+
+
 TEST(lubricatedContact, badInputNamesTheKeyword)
 {
     FatalIOError.throwExceptions();
