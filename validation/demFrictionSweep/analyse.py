@@ -389,23 +389,24 @@ def sensitivity(rows, variants, lines):
     lines += ["", "## One change at a time (%s)" % pairs_name(ARTICLE2_RADIUS),
               "", "phi' at article 2's radius; eq 14 at the run's I_v, eq 16 "
               "at its phi' (phi_m 0.5801).", "",
-              "| run | I_v | mu | eq 14 | mu_c | eq 14's mu_c | eta_r "
-              "| eta_r / eq 16 | lambda_33 |",
-              "|---|---|---|---|---|---|---|---|---|"]
+              "| mu_m | phi' | run | I_v | mu | eq 14 | mu_c | eq 14's mu_c "
+              "| eta_r | eta_r / eq 16 | lambda_33 |",
+              "|---|---|---|---|---|---|---|---|---|---|---|"]
     phim = phi_m(0.4)
     shown = []
-    for r in variants:
+    for r in sorted(variants, key=lambda r: (r["mu_m"], r["phiNominal"],
+                                             r["variant"])):
         b = base.get((r["mu_m"], r["phiNominal"], r["cutoff"]))
         runs = [(VARIANTS.get(r["variant"], r["variant"]), r)]
         if b is not None and b not in shown:
             shown.append(b)
-            runs.insert(0, ("mu_m %g, phi %g, as above" % (b["mu_m"],
-                                                          b["phiNominal"]), b))
+            runs.insert(0, ("as above", b))
         for name, x in runs:
             p = float(article2_phi(x["phi"], ARTICLE2_ROUGHNESS))
-            lines.append("| %s | %.4g | %.3f | %.3f | %.3f | %.3f "
-                         "| %.1f ± %.1f | %.2f | %.3f |"
-                         % (name, x["Iv"], x["mu"], model_mu(x["Iv"], phim),
+            lines.append("| %g | %.4f | %s | %.4g | %.3f | %.3f | %.3f "
+                         "| %.3f | %.1f ± %.1f | %.2f | %.3f |"
+                         % (x["mu_m"], p, name, x["Iv"], x["mu"],
+                            model_mu(x["Iv"], phim),
                             x["muContact"], model_mu_contact(x["Iv"]),
                             x["eta_r"],
                             x["eta_rErr"], x["eta_r"] / model_eta(p, phim),
