@@ -114,12 +114,7 @@ int main(int argc, char *argv[])
     particles.writeVTK();
 
     Info<< "\nStarting time loop\n" << endl;
-    scalar clockAtLastStep = runClock.elapsedTime();
-    // The time left at the cost of the last 200 steps or so
-    fdm::remainingTime timeLeft
-    (
-        clockAtLastStep, runTime.elapsedCpuTime(), runTime.value(), 200
-    );
+    #include "createTimeLeft.H"
 
     while (runTime.loop())
     {

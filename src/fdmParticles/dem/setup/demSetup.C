@@ -126,6 +126,49 @@ void Foam::fdm::setNeighbours(lubricatedDEM& dem, const dictionary& props)
 }
 
 
+namespace
+{
+
+//- The set-up's summary: the model's settings and the two numbers that
+//  decide the regime (rigidity, inertia)
+void reportSetUp
+(
+    const Foam::fdm::lubricatedDEM& dem,
+    const Foam::scalar shearRate,
+    const Foam::scalar rho
+)
+{
+    using namespace Foam;
+    const fdm::lubricatedContact& m = dem.model();
+    const scalar a = min(dem.radii());
+    Info<< "lubricatedDEM: " << dem.size() << " spheres, phi "
+        << dem.volumeFraction() << ", shear rate " << shearRate << nl
+        << "    roughness " << m.roughness() << ", friction "
+        << m.friction() << ", cutoff " << m.cutoff() << " a, shearArms "
+        << fdm::lubricatedContact::shearArmsNames[m.arms()]
+        << ", asperities "
+        << fdm::lubricatedContact::asperitiesNames[m.asperitiesPlace()]
+        << ", torques " << (m.torques() ? "thesis" : "none")
+        << ", lubrication " << m.lubricationName() << nl
+        << "    lubricated pairs: ";
+    if (dem.delaunayInterval() > 0)
+    {
+        Info<< "Delaunay neighbours within the cutoff, triangulated every "
+            << dem.delaunayInterval() << " steps" << nl;
+    }
+    else
+    {
+        Info<< "every pair within the cutoff" << nl;
+    }
+    Info<< "    stiffness number g/(eta gammaDot a) "
+        << m.stiffness()/(m.viscosity()*max(mag(shearRate), SMALL)*a)
+        << ", Stokes number rho a^2 gammaDot/eta "
+        << rho*a*a*mag(shearRate)/m.viscosity() << nl;
+}
+
+} // namespace
+
+
 Foam::fdm::lubricatedDEM Foam::fdm::createDEM
 (
     const dictionary& props,
@@ -186,32 +229,7 @@ Foam::fdm::lubricatedDEM Foam::fdm::createDEM
     setPressureWall(dem, props, list, mobile);
 
     readDEMState(dem, runTime);
-
-    const fdm::lubricatedContact& m = dem.model();
-    const scalar a = min(dem.radii());
-    Info<< "lubricatedDEM: " << dem.size() << " spheres, phi "
-        << dem.volumeFraction() << ", shear rate " << shearRate << nl
-        << "    roughness " << m.roughness() << ", friction "
-        << m.friction() << ", cutoff " << m.cutoff() << " a, shearArms "
-        << fdm::lubricatedContact::shearArmsNames[m.arms()]
-        << ", asperities "
-        << fdm::lubricatedContact::asperitiesNames[m.asperitiesPlace()]
-        << ", torques " << (m.torques() ? "thesis" : "none")
-        << ", lubrication " << m.lubricationName() << nl
-        << "    lubricated pairs: ";
-    if (dem.delaunayInterval() > 0)
-    {
-        Info<< "Delaunay neighbours within the cutoff, triangulated every "
-            << dem.delaunayInterval() << " steps" << nl;
-    }
-    else
-    {
-        Info<< "every pair within the cutoff" << nl;
-    }
-    Info<< "    stiffness number g/(eta gammaDot a) "
-        << m.stiffness()/(m.viscosity()*max(mag(shearRate), SMALL)*a)
-        << ", Stokes number rho a^2 gammaDot/eta "
-        << rho*a*a*mag(shearRate)/m.viscosity() << nl;
+    reportSetUp(dem, shearRate, rho);
     return dem;
 }
 
