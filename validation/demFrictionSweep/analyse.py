@@ -113,8 +113,8 @@ def merged(new, path=RESULTS, variants=False):
         for line in open(path):
             if not line.startswith("#"):
                 v = line.split()
-                r = dict(zip(COLUMNS, map(float, v[len(columns) -
-                                               len(COLUMNS):])))
+                r = dict(zip(COLUMNS, map(float, v[1:] if variants
+                                               else v)))
                 r["variant"] = v[0] if variants else None
                 rows[r["variant"], r["mu_m"], r["phiNominal"],
                      r["cutoff"]] = r
@@ -165,11 +165,9 @@ def friction_family(rows, lines, cutoff, png):
                           for s, m in zip(spread, mus)) + "."]
     mean = [np.mean([r["phim"] for r in sel if r["mu_m"] == m]) for m in mus]
 
-    def form(m, p0, dp, ms):
-        return p0 - dp * (1 - np.exp(-np.asarray(m) / ms))
     fit = None
     if len(mus) >= 3:
-        fit, _ = curve_fit(form, mus, mean, p0=(0.63, 0.08, 0.4))
+        fit, _ = curve_fit(phi_m, mus, mean, p0=(0.63, 0.08, 0.4))
         lines += ["", "Eq 13's form phi_m = p0 - dp (1 - exp(-mu_m/m*)) "
                   "fitted to the mean phi_m per friction: p0 = %.4f, "
                   "dp = %.4f, m* = %.3f (article 2: 0.6301, 0.0794, 0.4032)."
@@ -178,7 +176,7 @@ def friction_family(rows, lines, cutoff, png):
     m = np.linspace(0, 1.2, 100)
     ax.plot(m, phi_m(m), "r--", label="article 2, eq 13")
     if fit is not None:
-        ax.plot(m, form(m, *fit), "k:", label="eq 13 form fitted")
+        ax.plot(m, phi_m(m, *fit), "k:", label="eq 13 form fitted")
     for phi in (0.48, 0.52):
         s = [r for r in sel if r["phiNominal"] == phi]
         ax.plot([r["mu_m"] for r in s], [r["phim"] for r in s], "o",
@@ -231,18 +229,16 @@ def power_law_phi_m(rows, lines, cutoff, png):
                        lw=0.8)
     m, pm, err = map(np.array, zip(*fits))
 
-    def form(mu, p0, dp, ms):
-        return p0 - dp * (1 - np.exp(-np.asarray(mu) / ms))
     mu = np.linspace(0, 1.2, 100)
     if len(m) >= 4:
-        p, cov = curve_fit(form, m, pm, p0=(0.63, 0.08, 0.4), sigma=err,
+        p, cov = curve_fit(phi_m, m, pm, p0=(0.63, 0.08, 0.4), sigma=err,
                            absolute_sigma=True)
         lines += ["", "Eq 13's form fitted to these phi_m (weighted): "
                   "p0 = %.4f ± %.4f, dp = %.4f ± %.4f, m* = %.3f ± %.3f "
                   "(article 2: 0.6301, 0.0794, 0.4032)."
                   % (p[0], np.sqrt(cov[0, 0]), p[1], np.sqrt(cov[1, 1]),
                      p[2], np.sqrt(cov[2, 2]))]
-        axes[0].plot(mu, form(mu, *p), "k:", label="eq 13 form fitted")
+        axes[0].plot(mu, phi_m(mu, *p), "k:", label="eq 13 form fitted")
     axes[0].plot(mu, phi_m(mu), "r--", label="article 2, eq 13")
     axes[0].errorbar(m, pm, yerr=err, fmt="ko", capsize=3,
                      label="DEM, fitted power law")
@@ -388,11 +384,10 @@ def sensitivity(rows, variants, lines):
     base = {(r["mu_m"], r["phiNominal"], r["cutoff"]): r for r in rows}
     lines += ["", "## One change at a time (%s)" % pairs_name(ARTICLE2_RADIUS),
               "", "phi' at article 2's radius; eq 14 at the run's I_v, eq 16 "
-              "at its phi' (phi_m 0.5801).", "",
+              "at its phi' with eq 13's phi_m at its friction.", "",
               "| mu_m | phi' | run | I_v | mu | eq 14 | mu_c | eq 14's mu_c "
               "| eta_r | eta_r / eq 16 | lambda_33 |",
               "|---|---|---|---|---|---|---|---|---|---|---|"]
-    phim = phi_m(0.4)
     shown = []
     for r in sorted(variants, key=lambda r: (r["mu_m"], r["phiNominal"],
                                              r["variant"])):
@@ -401,6 +396,7 @@ def sensitivity(rows, variants, lines):
         if b is not None and b not in shown:
             shown.append(b)
             runs.insert(0, ("as above", b))
+        phim = phi_m(r["mu_m"])
         for name, x in runs:
             p = float(article2_phi(x["phi"], ARTICLE2_ROUGHNESS))
             lines.append("| %g | %.4f | %s | %.4g | %.3f | %.3f | %.3f "

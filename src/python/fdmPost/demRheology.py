@@ -23,9 +23,10 @@ PARTS = ("normalContact", "shearContact", "normalLubrication",
 MU1, MU2, I0, INTRINSIC = 0.36, 0.7, 0.0133, 2.5
 
 
-def phi_m(mu_m):
-    """Maximum flowing fraction against contact friction (eq 13)."""
-    return 0.6301 - 0.0794 * (1 - np.exp(-mu_m / 0.4032))
+def phi_m(mu_m, p0=0.6301, dp=0.0794, mu_star=0.4032):
+    """Maximum flowing fraction against contact friction (eq 13; the
+    constants as arguments for fitting its form)."""
+    return p0 - dp * (1 - np.exp(-np.asarray(mu_m) / mu_star))
 
 
 def article2_phi(phi, roughness):
