@@ -14,8 +14,10 @@ runs); then
       mu_h = I_v (1 - phi)^-5/2; eta_r against eq 16;
   article 2's spheres with radius arms, every friction: phi_m fitted as
       article 2 did (demRheology.fit_phi_m over the runs with I_v < 0.15);
+  one change at a time (sensitivity.dat, variants.py), phi_m fitted so
+      for a change with enough runs;
 
-writes report.md, the phiMax*.png and muIv.png here; runs without
+writes report.md, the phiMax*.png, muIv.png and torques.png here; runs without
 the End line in their log (killed, failed) are skipped.
 
     analyse.py [WORKDIR]
@@ -45,6 +47,7 @@ from fdmPost.demRheology import (averages, article2_phi,  # noqa: E402
                                  model_mu_contact, model_mu_hydrodynamic,
                                  MU1, MU2, I0)
 from fdmPost.report import write_markdown  # noqa: E402
+from variants import VARIANTS, sensitivity, torques_figure  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results.dat")
 SENSITIVITY = os.path.join(HERE, "sensitivity.dat")
@@ -190,17 +193,19 @@ def friction_family(rows, lines, cutoff, png):
     return fit
 
 
-def power_law_phi_m(rows, lines, cutoff, png):
+def power_law_phi_m(rows, lines, cutoff, png, change=None):
     """phi_m per friction as article 2 fixed it (demRheology.fit_phi_m:
     phi' = phi_m/(1 + c I_v^n) over every run at that friction, n free),
-    against eq 13; eq 13's form fitted to them.  Plot: phi_m(mu_m) and
-    1 - phi'/phi_m against I_v."""
+    against eq 13; eq 13's form fitted to them.  Plot (png): phi_m(mu_m)
+    and 1 - phi'/phi_m against I_v.  change: the variant the rows share,
+    for the title."""
     fam = [r for r in rows if r["cutoff"] == cutoff and r["Iv"] < SMALL_IV]
     mus = [m for m in sorted({r["mu_m"] for r in fam})
            if sum(r["mu_m"] == m for r in fam) >= 4]
     if not mus:
         return
-    lines += ["", "## phi_m fitted as article 2 did (%s)" % pairs_name(cutoff),
+    lines += ["", "## phi_m fitted as article 2 did (%s%s)"
+              % (pairs_name(cutoff), ", " + change if change else ""),
               "", "phi' = phi_m/(1 + c I_v^n) over the runs at one friction "
               "with I_v < %g (n free; article 2 chose phi_m so that "
               "1 - phi/phi_m against I_v is one power law at small I_v, "
@@ -250,7 +255,9 @@ def power_law_phi_m(rows, lines, cutoff, png):
     axes[1].legend(fontsize=8)
     fig.suptitle(pairs_name(cutoff), fontsize=9)
     fig.tight_layout()
-    fig.savefig(os.path.join(HERE, png), dpi=120)
+    if png:
+        fig.savefig(os.path.join(HERE, png), dpi=120)
+    plt.close(fig)
 
 
 def law_against_mapping(rows, lines):
@@ -370,45 +377,6 @@ def phi_family(rows, lines):
     fig.savefig(os.path.join(HERE, "muIv.png"), dpi=120)
 
 
-VARIANTS = {"box24": "24 a cell (16 a)", "kt0.3": "k_t/g 0.3 (0.5)",
-            "kt2": "k_t/g 2 (0.5)",
-            "g1e7": "stiffness 1e7 (1e6), step / 10^1/2",
-            "strain10": "strain 2-10 (2-5)",
-            "noTorques": "no rolling and twisting torques"}
-
-
-def sensitivity(rows, variants, lines):
-    """The article2sensitivity runs beside the run they change."""
-    if not variants:
-        return
-    base = {(r["mu_m"], r["phiNominal"], r["cutoff"]): r for r in rows}
-    lines += ["", "## One change at a time (%s)" % pairs_name(ARTICLE2_RADIUS),
-              "", "phi' at article 2's radius; eq 14 at the run's I_v, eq 16 "
-              "at its phi' with eq 13's phi_m at its friction.", "",
-              "| mu_m | phi' | run | I_v | mu | eq 14 | mu_c | eq 14's mu_c "
-              "| eta_r | eta_r / eq 16 | lambda_33 |",
-              "|---|---|---|---|---|---|---|---|---|---|---|"]
-    shown = []
-    for r in sorted(variants, key=lambda r: (r["mu_m"], r["phiNominal"],
-                                             r["variant"])):
-        b = base.get((r["mu_m"], r["phiNominal"], r["cutoff"]))
-        runs = [(VARIANTS.get(r["variant"], r["variant"]), r)]
-        if b is not None and b not in shown:
-            shown.append(b)
-            runs.insert(0, ("as above", b))
-        phim = phi_m(r["mu_m"])
-        for name, x in runs:
-            p = float(article2_phi(x["phi"], ARTICLE2_ROUGHNESS))
-            lines.append("| %g | %.4f | %s | %.4g | %.3f | %.3f | %.3f "
-                         "| %.3f | %.1f ± %.1f | %.2f | %.3f |"
-                         % (x["mu_m"], p, name, x["Iv"], x["mu"],
-                            model_mu(x["Iv"], phim),
-                            x["muContact"], model_mu_contact(x["Iv"]),
-                            x["eta_r"],
-                            x["eta_rErr"], x["eta_r"] / model_eta(p, phim),
-                            x["lambda33"]))
-
-
 def main():
     new = measure(sys.argv[1]) if len(sys.argv) > 1 else []
     rows = merged(new)
@@ -424,7 +392,14 @@ def main():
     friction_family(rows, lines, ARTICLE2_RADIUS, "phiMaxArticle2.png")
     power_law_phi_m(rows, lines, ARTICLE2_RADIUS, "phiMaxArticle2Fit.png")
     phi_family(rows, lines)
-    sensitivity(rows, variants, lines)
+    base = [r for r in rows if r["cutoff"] == ARTICLE2_RADIUS]
+    sensitivity(base, variants, lines, pairs_name(ARTICLE2_RADIUS),
+                ARTICLE2_ROUGHNESS)
+    for v in sorted({r["variant"] for r in variants}):
+        power_law_phi_m([r for r in variants if r["variant"] == v], lines,
+                        ARTICLE2_RADIUS, None, VARIANTS.get(v, v))
+    torques_figure(base, variants, ARTICLE2_ROUGHNESS,
+                   os.path.join(HERE, "torques.png"))
     law_against_mapping(rows, lines)
     write_markdown(os.path.join(HERE, "report.md"), lines)
 

@@ -24,6 +24,14 @@ Foam::fdm::lubricatedContact::asperitiesNames
     {asperities::inside, "inside"},
 });
 
+const Foam::Enum<Foam::fdm::lubricatedContact::torqueForms>
+Foam::fdm::lubricatedContact::torqueFormsNames
+({
+    {torqueForms::thesis, "thesis"},
+    {torqueForms::article2Code, "article2Code"},
+    {torqueForms::none, "none"},
+});
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 Foam::scalar Foam::fdm::lubricatedContact::gapUpdate
@@ -83,7 +91,7 @@ Foam::fdm::lubricatedContact::lubricatedContact
     cutoff_(cutoff),
     arms_(arms),
     asperities_(where),
-    torques_(true)
+    torques_(torqueForms::thesis)
 {}
 
 
@@ -277,11 +285,13 @@ Foam::fdm::lubricatedPairLoads Foam::fdm::lubricatedContact::step
 
     // Rolling and twisting resistance while u <= a (A.3); twoSphere: in
     // the two-body hydrodynamics
-    if (u <= 1 && !twoBody_ && torques_)
+    if (u <= 1 && !twoBody_ && torques_ != torqueForms::none)
     {
         const scalar logInv = -state.logGap;
+        const scalar leading =
+            torques_ == torqueForms::thesis ? 1.5 : 0.15;
         loads.rollingDamping =
-            pi*viscosity_*a*a*a*(1.5 + 0.126*u)*logInv;
+            pi*viscosity_*a*a*a*(leading + 0.126*u)*logInv;
         loads.twistingDamping = pi*viscosity_*a*a*a*u*logInv;
     }
     else

@@ -63,22 +63,26 @@ Foam::fdm::lubricatedContact fromDictionary(const Foam::dictionary& dict)
             "interaction while the gap is below cutoff*a; thesis 2 (4 for"
             " the two-sphere test)"
         ),
-        lubricatedContact::shearArmsNames.lookupOrDefault
+        readChoice
         (
-            "shearArms", dict, lubricatedContact::shearArms::contactPoint
+            dict, "shearArms", lubricatedContact::shearArmsNames,
+            lubricatedContact::shearArms::contactPoint
         ),
-        lubricatedContact::asperitiesNames.lookupOrDefault
+        readChoice
         (
-            "asperities", dict, lubricatedContact::asperities::outside
+            dict, "asperities", lubricatedContact::asperitiesNames,
+            lubricatedContact::asperities::outside
         )
     );
 
-    const word torques(dict.getOrDefault<word>("torques", "thesis"));
-    checkChoice(dict, "torques", torques, {"thesis", "none"});
-    if (torques == "none")
-    {
-        law.dropTorques();
-    }
+    law.setTorques
+    (
+        readChoice
+        (
+            dict, "torques", lubricatedContact::torqueFormsNames,
+            lubricatedContact::torqueForms::thesis
+        )
+    );
 
     const word lubrication(dict.getOrDefault<word>("lubrication", "thesis"));
     checkChoice(dict, "lubrication", lubrication, {"thesis", "twoSphere"});

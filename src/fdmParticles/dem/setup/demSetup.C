@@ -148,7 +148,8 @@ void reportSetUp
         << fdm::lubricatedContact::shearArmsNames[m.arms()]
         << ", asperities "
         << fdm::lubricatedContact::asperitiesNames[m.asperitiesPlace()]
-        << ", torques " << (m.torques() ? "thesis" : "none")
+        << ", torques "
+        << fdm::lubricatedContact::torqueFormsNames[m.torques()]
         << ", lubrication " << m.lubricationName() << nl
         << "    lubricated pairs: ";
     if (dem.delaunayInterval() > 0)

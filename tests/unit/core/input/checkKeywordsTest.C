@@ -77,3 +77,38 @@ TEST(checkChoice, stopsOnUnknownValue)
         Foam::error
     );
 }
+
+
+TEST(readChoice, defaultValueAndMisspeltChoice)
+{
+    // An Enum choice: the default without the keyword, the named value
+    // with it, a misspelt one stopped with the keyword and the nearest
+    // valid spelling (Enum's own lookup names neither)
+    enum class shape { sphere, cube };
+    const Enum<shape> names
+    ({
+        {shape::sphere, "sphere"},
+        {shape::cube, "cube"}
+    });
+    EXPECT_EQ
+    (
+        fdm::readChoice(parse("other 1;"), "shape", names, shape::sphere),
+        shape::sphere
+    );
+    EXPECT_EQ
+    (
+        fdm::readChoice(parse("shape cube;"), "shape", names, shape::sphere),
+        shape::cube
+    );
+    const dictionary bad(parse("shape cub;"));
+    const std::string msg = unitTest::errorOf
+    (
+        [&bad, &names]()
+        {
+            fdm::readChoice(bad, "shape", names, shape::sphere);
+        }
+    );
+    EXPECT_NE(msg.find("shape 'cub'"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("nearest valid spelling: 'cube'"), std::string::npos)
+        << msg;
+}

@@ -5,10 +5,12 @@
 #include "lubricatedContact.H"
 #include "unitTestHelpers.H"
 #include "lubricatedContactInputs.H"
+#include "mathematicalConstants.H"
 
 #include <gtest/gtest.h>
 
 using namespace Foam;
+using Foam::constant::mathematical::pi;
 
 
 TEST(lubricatedContact, shearArmsKeywordListsTheChoices)
@@ -30,8 +32,9 @@ TEST(lubricatedContact, shearArmsKeywordListsTheChoices)
     catch (const Foam::error& e)
     {
         const std::string msg(e.message());
-        EXPECT_NE(msg.find("centre"), std::string::npos);
-        EXPECT_NE(msg.find("contactPoint"), std::string::npos);
+        EXPECT_NE(msg.find("centre"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("shearArms"), std::string::npos) << msg;
+        EXPECT_NE(msg.find("contactPoint"), std::string::npos) << msg;
     }
 }
 
@@ -63,37 +66,54 @@ TEST(lubricatedContact, asperitiesKeywordListsTheChoices)
     d.set("asperities", "within");
     const std::string msg = messageOf(d);
     EXPECT_NE(msg.find("within"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("asperities"), std::string::npos) << msg;
     EXPECT_NE(msg.find("outside"), std::string::npos) << msg;
 }
 
 
-TEST(lubricatedContact, torquesNoneLeavesOutRollingAndTwisting)
+TEST(lubricatedContact, torquesKeywordSelectsTheRollingForm)
 {
-    // A pair at u = 0.1 a (within one radius): damping with the thesis'
-    // torques, none without; a misspelt choice is named
+    // A pair at u = 0.1 a (within one radius): the thesis' rolling damping,
+    // a tenth of its leading term with article2Code (twisting unchanged),
+    // none without either; a misspelt choice is named with the valid ones
     dictionary d(unitTest::lubricatedContactInputs(0.2));
     const fdm::lubricatedPairMotion m{vector(0, 1, 0), 0.1, 1, Zero, Zero,
         Zero};
-    fdm::lubricatedContact thesis(d);
-    fdm::lubricatedPairState s = thesis.start(0.1, 1);
-    const fdm::lubricatedPairLoads with = thesis.step(m, 1e-3, s);
-    EXPECT_TRUE(thesis.torques());
-    EXPECT_GT(with.rollingDamping, 0);
-    EXPECT_GT(with.twistingDamping, 0);
+    scalar L = 0;   // ln(a/u) after the step
+    const auto loadsWith = [&](const word& form)
+    {
+        d.set("torques", form);
+        fdm::lubricatedContact law(d);
+        fdm::lubricatedPairState s = law.start(0.1, 1);
+        const fdm::lubricatedPairLoads loads = law.step(m, 1e-3, s);
+        L = -s.logGap;
+        return loads;
+    };
+    using form = fdm::lubricatedContact::torqueForms;
+    EXPECT_EQ(fdm::lubricatedContact(d).torques(), form::thesis);
+    const fdm::lubricatedPairLoads thesis = loadsWith("thesis");
+    const fdm::lubricatedPairLoads code = loadsWith("article2Code");
+    const fdm::lubricatedPairLoads none = loadsWith("none");
+    EXPECT_GT(thesis.rollingDamping, 0);
+    EXPECT_GT(thesis.twistingDamping, 0);
 
-    d.add("torques", "none");
-    fdm::lubricatedContact none(d);
-    s = none.start(0.1, 1);
-    const fdm::lubricatedPairLoads without = none.step(m, 1e-3, s);
-    EXPECT_FALSE(none.torques());
-    EXPECT_EQ(without.rollingDamping, 0);
-    EXPECT_EQ(without.twistingDamping, 0);
-    EXPECT_EQ(without.normalLubrication, with.normalLubrication);
+    // (3/2 + c u) L against (3/20 + c u) L at the same gap: their
+    // difference is (27/20) pi eta a^3 L, L = ln(a/u), eta = a = 1
+    EXPECT_NEAR(L, std::log(10.0), 0.05);
+    EXPECT_NEAR
+    (
+        thesis.rollingDamping - code.rollingDamping, 1.35*pi*L, 1e-12
+    );
+    EXPECT_EQ(code.twistingDamping, thesis.twistingDamping);
+    EXPECT_EQ(none.rollingDamping, 0);
+    EXPECT_EQ(none.twistingDamping, 0);
+    EXPECT_EQ(none.normalLubrication, thesis.normalLubrication);
 
     d.set("torques", "off");
     const std::string msg =
         unitTest::errorOf([&d]() { fdm::lubricatedContact bad(d); });
     EXPECT_NE(msg.find("torques"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("article2Code"), std::string::npos) << msg;
     EXPECT_NE(msg.find("none"), std::string::npos) << msg;
 }
 
