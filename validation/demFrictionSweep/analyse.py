@@ -48,18 +48,22 @@ from fdmPost.demRheology import (averages, article2_phi,  # noqa: E402
                                  MU1, MU2, I0)
 from fdmPost.report import write_markdown  # noqa: E402
 from variants import VARIANTS, sensitivity, torques_figure  # noqa: E402
+from normalStresses import lambda33_family  # noqa: E402
 
 RESULTS = os.path.join(HERE, "results.dat")
 SENSITIVITY = os.path.join(HERE, "sensitivity.dat")
 COLUMNS = ("mu_m", "phiNominal", "cutoff", "phi", "Iv", "mu", "eta_r",
-           "eta_rErr", "muContact", "muLubrication", "lambda33")
+           "eta_rErr", "muContact", "muLubrication", "lambda33",
+           "lambda33Err")
 # The cutoff column of the Delaunay pairs (run name cutD), of the
 # Delaunay pairs with article 2's spheres (cutA: one radius, 5 %
 # polydispersity, roughness 2e-2), of those with shearArms radius (cutR)
-# and of those with article 2's law (cutL: asperities inside)
-DELAUNAY, ARTICLE2, ARTICLE2_RADIUS, ARTICLE2_LAW = 0, -1, -2, -3
+# and of those with article 2's law (cutL: asperities inside); article 3's
+# spheres and pairs (cutT: 5 % polydispersity, roughness 1e-3, cut-off 2a,
+# radius arms)
+DELAUNAY, ARTICLE2, ARTICLE2_RADIUS, ARTICLE2_LAW, ARTICLE3 = 0, -1, -2, -3, -4
 PAIRS = {"D": DELAUNAY, "A": ARTICLE2, "R": ARTICLE2_RADIUS,
-         "L": ARTICLE2_LAW}
+         "L": ARTICLE2_LAW, "T": ARTICLE3}
 ARTICLE2_ROUGHNESS = 2e-2
 # The small-I_v range of article 2's power law 1 - phi/phi_m ~ I_v^n
 # (10^-4 - 10^-1), with room for the run at 0.13
@@ -73,7 +77,9 @@ def pairs_name(cutoff):
             ARTICLE2_RADIUS: "Delaunay pairs, article 2's spheres, "
                              "radius arms",
             ARTICLE2_LAW: "article 2's law (asperities inside), Delaunay "
-                          "pairs, radius arms"}.get(
+                          "pairs, radius arms",
+            ARTICLE3: "article 3's spheres and pairs (cut-off 2a), "
+                      "radius arms"}.get(
                 cutoff, "cut-off %ga" % cutoff)
 CONTACT = ("normalContact", "shearContact")
 
@@ -82,7 +88,7 @@ def measure(work):
     """Rows (dicts) of the runs in work."""
     rows = []
     for case in glob.glob(os.path.join(work, "mu*_phi*_cut*")):
-        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|D|A|R|L)"
+        m = re.search(r"mu([\d.]+)_phi([\d.]+)_cut([\d.]+|[DARLT])"
                       r"(?:_([a-z][\w.]*))?$", case)
         if not finished(case):
             # A killed run's shorter window must not replace a finished
@@ -100,7 +106,8 @@ def measure(work):
             PAIRS.get(m.group(3)) if m.group(3) in PAIRS
             else float(m.group(3)),
             a["phi"], a["Iv"], a["mu"], a["eta_r"][0], a["eta_r"][1],
-            contact * a["mu"], (1 - contact) * a["mu"], a["lambda33"])))
+            contact * a["mu"], (1 - contact) * a["mu"], a["lambda33"],
+            a["lambda33Blocks"][1])))
         row["variant"] = m.group(4)
         rows.append(row)
     return rows
@@ -116,7 +123,9 @@ def merged(new, path=RESULTS, variants=False):
         for line in open(path):
             if not line.startswith("#"):
                 v = line.split()
-                r = dict(zip(COLUMNS, map(float, v[1:] if variants
+                # rows written before a column was added lack it
+                r = dict.fromkeys(COLUMNS, float("nan"))
+                r.update(zip(COLUMNS, map(float, v[1:] if variants
                                                else v)))
                 r["variant"] = v[0] if variants else None
                 rows[r["variant"], r["mu_m"], r["phiNominal"],
@@ -362,7 +371,8 @@ def phi_family(rows, lines):
         ax.loglog(x, [r["muLubrication"] for r in sel], "^", mfc="none",
                   color="C%d" % k, label="DEM $\\mu_L$, %s" % pairs_name(cut))
         axes[1].semilogy([r["phi"] for r in sel], [r["eta_r"] for r in sel],
-                         "o", color="C%d" % k, label="DEM, %s" % pairs_name(cut))
+                         "o", color="C%d" % k,
+                         label="DEM, %s" % pairs_name(cut))
     ax.set_xlabel("$I_v$")
     ax.set_ylabel(r"$\mu$")
     ax.legend(fontsize=7)
@@ -401,6 +411,8 @@ def main():
     torques_figure(base, variants, ARTICLE2_ROUGHNESS,
                    os.path.join(HERE, "torques.png"))
     law_against_mapping(rows, lines)
+    lambda33_family([r for r in rows if r["cutoff"] == ARTICLE3], lines,
+                    pairs_name(ARTICLE3), os.path.join(HERE, "lambda33.png"))
     write_markdown(os.path.join(HERE, "report.md"), lines)
 
 

@@ -179,7 +179,8 @@ def averages(case, start_strain, blocks=5):
 def series_averages(d, eta, rate, start_strain, blocks=5):
     """averages() of the rows d of a stress series; also the mean
     interaction count and, as (mean, standard error), the contact share of
-    sigma_xy (contactShare) and the record-wise mu (muBlocks)."""
+    sigma_xy (contactShare) and the record-wise mu and lambda_33 (muBlocks,
+    lambda33Blocks)."""
     d = d[d[:, 1] >= start_strain]
     if len(d) < blocks:
         raise SystemExit("too few records after strain %g" % start_strain)
@@ -206,4 +207,5 @@ def series_averages(d, eta, rate, start_strain, blocks=5):
         (part_xy["normalContact"] + part_xy["shearContact"]) / s["xy"],
         blocks)
     out["muBlocks"] = block_mean(s["xy"] / -s["yy"], blocks)
+    out["lambda33Blocks"] = block_mean(s["zz"] / s["yy"], blocks)
     return out
