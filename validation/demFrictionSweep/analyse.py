@@ -16,9 +16,11 @@ runs); then
       article 2 did (demRheology.fit_phi_m over the runs with I_v < 0.15);
   one change at a time (sensitivity.dat, variants.py), phi_m fitted so
       for a change with enough runs;
+  article 3's spheres and pairs: lambda_33 against its eqs 7-8
+      (normalStresses.py);
 
-writes report.md, the phiMax*.png, muIv.png and torques.png here; runs without
-the End line in their log (killed, failed) are skipped.
+writes report.md, the phiMax*.png, muIv.png, torques.png and lambda33.png
+here; runs without the End line in their log (killed, failed) are skipped.
 
     analyse.py [WORKDIR]
 
@@ -206,8 +208,8 @@ def power_law_phi_m(rows, lines, cutoff, png, change=None):
     """phi_m per friction as article 2 fixed it (demRheology.fit_phi_m:
     phi' = phi_m/(1 + c I_v^n) over every run at that friction, n free),
     against eq 13; eq 13's form fitted to them.  Plot (png): phi_m(mu_m)
-    and 1 - phi'/phi_m against I_v.  change: the variant the rows share,
-    for the title."""
+    and 1 - phi'/phi_m against I_v (power_law_figure), none without png.
+    change: the variant the rows share, for the title."""
     fam = [r for r in rows if r["cutoff"] == cutoff and r["Iv"] < SMALL_IV]
     mus = [m for m in sorted({r["mu_m"] for r in fam})
            if sum(r["mu_m"] == m for r in fam) >= 4]
@@ -223,38 +225,49 @@ def power_law_phi_m(rows, lines, cutoff, png, change=None):
               "| mu_m | runs | phi' | I_v | phi_m fitted | n | eq 13 "
               "| difference | phi' (1 + I_v^1/2), run nearest jamming |",
               "|---|---|---|---|---|---|---|---|---|"]
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     fits = []
-    for k, m in enumerate(mus):
+    for m in mus:
         sel = sorted((r for r in fam if r["mu_m"] == m), key=lambda r: r["Iv"])
         phi = article2_phi([r["phi"] for r in sel], ARTICLE2_ROUGHNESS)
         iv = np.array([r["Iv"] for r in sel])
         (pm, c, n), err = fit_phi_m(phi, iv)
-        fits.append((m, pm, err[0]))
+        fits.append(dict(mu=m, phi=phi, iv=iv, pm=pm, c=c, n=n, err=err[0]))
         lines.append("| %g | %d | %.3f-%.3f | %.2g-%.2g | %.4f ± %.4f "
                      "| %.2f ± %.2f | %.4f | %+.4f | %.4f |"
                      % (m, len(sel), phi.min(), phi.max(), iv.min(),
                         iv.max(), pm, err[0], n, err[2], phi_m(m),
                         pm - phi_m(m), master_phi_m(phi[0], iv[0])))
-        axes[1].loglog(iv, 1 - phi / pm, "o", color="C%d" % k,
-                       label=r"$\mu_m$ = %g" % m)
-        x = np.logspace(np.log10(iv.min()), np.log10(iv.max()))
-        axes[1].loglog(x, c * x**n / (1 + c * x**n), "-", color="C%d" % k,
-                       lw=0.8)
-    m, pm, err = map(np.array, zip(*fits))
-
-    mu = np.linspace(0, 1.2, 100)
-    if len(m) >= 4:
-        p, cov = curve_fit(phi_m, m, pm, p0=(0.63, 0.08, 0.4), sigma=err,
-                           absolute_sigma=True)
+    form = None
+    if len(fits) >= 4:
+        form, cov = curve_fit(phi_m, [f["mu"] for f in fits],
+                              [f["pm"] for f in fits], p0=(0.63, 0.08, 0.4),
+                              sigma=[f["err"] for f in fits],
+                              absolute_sigma=True)
         lines += ["", "Eq 13's form fitted to these phi_m (weighted): "
                   "p0 = %.4f ± %.4f, dp = %.4f ± %.4f, m* = %.3f ± %.3f "
                   "(article 2: 0.6301, 0.0794, 0.4032)."
-                  % (p[0], np.sqrt(cov[0, 0]), p[1], np.sqrt(cov[1, 1]),
-                     p[2], np.sqrt(cov[2, 2]))]
-        axes[0].plot(mu, phi_m(mu, *p), "k:", label="eq 13 form fitted")
+                  % (form[0], np.sqrt(cov[0, 0]), form[1],
+                     np.sqrt(cov[1, 1]), form[2], np.sqrt(cov[2, 2]))]
+    if png:
+        power_law_figure(fits, form, pairs_name(cutoff), png)
+
+
+def power_law_figure(fits, form, title, png):
+    """phi_m(mu_m) of the power-law fits (with eq 13's form fitted to them
+    where form is given) and 1 - phi'/phi_m against I_v per friction."""
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for k, f in enumerate(fits):
+        axes[1].loglog(f["iv"], 1 - f["phi"] / f["pm"], "o", color="C%d" % k,
+                       label=r"$\mu_m$ = %g" % f["mu"])
+        x = np.logspace(np.log10(f["iv"].min()), np.log10(f["iv"].max()))
+        cx = f["c"] * x**f["n"]
+        axes[1].loglog(x, cx / (1 + cx), "-", color="C%d" % k, lw=0.8)
+    mu = np.linspace(0, 1.2, 100)
+    if form is not None:
+        axes[0].plot(mu, phi_m(mu, *form), "k:", label="eq 13 form fitted")
     axes[0].plot(mu, phi_m(mu), "r--", label="article 2, eq 13")
-    axes[0].errorbar(m, pm, yerr=err, fmt="ko", capsize=3,
+    axes[0].errorbar([f["mu"] for f in fits], [f["pm"] for f in fits],
+                     yerr=[f["err"] for f in fits], fmt="ko", capsize=3,
                      label="DEM, fitted power law")
     axes[0].set_xlabel(r"$\mu_m$")
     axes[0].set_ylabel(r"$\phi_m$ (article 2's radius)")
@@ -262,10 +275,9 @@ def power_law_phi_m(rows, lines, cutoff, png, change=None):
     axes[1].set_xlabel("$I_v$")
     axes[1].set_ylabel(r"$1 - \phi'/\phi_m$")
     axes[1].legend(fontsize=8)
-    fig.suptitle(pairs_name(cutoff), fontsize=9)
+    fig.suptitle(title, fontsize=9)
     fig.tight_layout()
-    if png:
-        fig.savefig(os.path.join(HERE, png), dpi=120)
+    fig.savefig(os.path.join(HERE, png), dpi=120)
     plt.close(fig)
 
 
@@ -408,7 +420,7 @@ def main():
     for v in sorted({r["variant"] for r in variants}):
         power_law_phi_m([r for r in variants if r["variant"] == v], lines,
                         ARTICLE2_RADIUS, None, VARIANTS.get(v, v))
-    torques_figure(base, variants, ARTICLE2_ROUGHNESS,
+    torques_figure(base, variants, ARTICLE2_ROUGHNESS, SMALL_IV,
                    os.path.join(HERE, "torques.png"))
     law_against_mapping(rows, lines)
     lambda33_family([r for r in rows if r["cutoff"] == ARTICLE3], lines,

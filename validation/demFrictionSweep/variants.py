@@ -61,9 +61,9 @@ def sensitivity(base, variants, lines, title, roughness):
                             x["lambda33"]))
 
 
-def torques_figure(base, variants, roughness, png, mu_m=0.4):
+def torques_figure(base, variants, roughness, iv_max, png, mu_m=0.4):
     """eta_r(phi') against eq 16 and mu(I_v) against eq 14 at mu_m for
-    each torque setting, to png."""
+    each torque setting, runs with I_v < iv_max, to png."""
     phim = phi_m(mu_m)
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     x = np.linspace(0.40, 0.99 * phim, 200)
@@ -72,10 +72,10 @@ def torques_figure(base, variants, roughness, png, mu_m=0.4):
     iv = np.logspace(-3.2, -0.5, 200)
     axes[1].loglog(iv, model_mu(iv, phim), "k--", label="article 2, eq 14")
     for k, (variant, name) in enumerate(TORQUES):
-        rows = sorted((r for r in (variants if variant else base)
-                       if r.get("variant") == variant
-                       and r["mu_m"] == mu_m and r["Iv"] < 0.15),
-                      key=lambda r: r["phi"])
+        runs = ([r for r in variants if r["variant"] == variant]
+                if variant else base)
+        rows = sorted((r for r in runs if r["mu_m"] == mu_m
+                       and r["Iv"] < iv_max), key=lambda r: r["phi"])
         if not rows:
             continue
         p = article2_phi([r["phi"] for r in rows], roughness)
