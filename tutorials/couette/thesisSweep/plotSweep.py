@@ -43,11 +43,13 @@ THESIS_ALPHA, THESIS_PHI_J = 0.803, 0.59
 
 
 def rows_from_runs(folders, start_at):
-    """A row per phi*/ case of the folders (checkpoints or runs; a case in
-    several, the one that reached the largest strain)."""
+    """A row per adhesionless phi*/ case of the folders (checkpoints or
+    runs; a case in several, the one that reached the largest strain)."""
     rows = []
     for name, records in checkpoint.records_by_case(
             folders, "phi*", sweep.wall_layer).items():
+        if records.meta.get("adhesionNumber", 0.0):
+            continue    # the adhesion campaign's (plotCampaign.py)
         strain = records.strain()
         start = start_at if start_at is not None else \
             sweep.averaging_start(strain)
