@@ -13,8 +13,10 @@ Description
     (pseudo-mass of eq 2.53 for a = 5 Delta plus the frame-invariant
     sub-grid matrix of every near pair, evaluated from the shipped table
     data/resistance/subGridPair_lambda1) and its preconditioned-CG solve
-    (tolerance 1e-6).  Prints a table of wall times and times per
-    particle.
+    (tolerance 1e-6).  Prints a table of wall times, times per particle
+    and the process' peak resident memory after each size (the sizes
+    ascend, so it is that size's peak): what every rank holds today, when
+    each holds all particles (issue 38's replicated baseline).
 
 \*---------------------------------------------------------------------------*/
 
@@ -27,9 +29,29 @@ Description
 #include "constants.H"
 #include "IOstreams.H"
 
+#include <fstream>
 #include <random>
+#include <string>
 
 using namespace Foam;
+
+//- Peak resident memory of this process [MiB] (VmHWM, Linux)
+static scalar peakResidentMiB()
+{
+    std::ifstream status("/proc/self/status");
+    std::string key;
+    while (status >> key)
+    {
+        if (key == "VmHWM:")
+        {
+            scalar kiB = 0;
+            status >> kiB;
+            return kiB/1024;
+        }
+    }
+    return -1;
+}
+
 
 int main()
 {
@@ -48,8 +70,8 @@ int main()
     );
 
     Info<< "| N | near pairs | pair search s | assembly s | solve s |"
-        << " CG its | total us per particle |" << nl
-        << "|---|---|---|---|---|---|---|" << nl;
+        << " CG its | total us per particle | peak memory MiB |" << nl
+        << "|---|---|---|---|---|---|---|---|" << nl;
 
     for (const label n : {10, 22, 47})
     {
@@ -100,7 +122,8 @@ int main()
         Info<< "| " << N << " | " << pairs.size() << " | " << tSearch
             << " | " << tAssembly << " | " << tSolve << " | "
             << info.iterations << " | "
-            << 1e6*(tSearch + tAssembly + tSolve)/N << " |" << endl;
+            << 1e6*(tSearch + tAssembly + tSolve)/N << " | "
+            << peakResidentMiB() << " |" << endl;
     }
 
     return 0;

@@ -1,0 +1,195 @@
+#!/usr/bin/env python3
+"""Issue 38's baseline and model: memory per rank, time per step and
+communication per step of the particle side, today's replicated scheme
+(every rank holds every particle, sums the per-particle integrals over all
+ranks and solves the whole particle system) against particles owned by
+subdomain (each rank holds its own particles and the ghosts within the
+halo, exchanges with its neighbours and solves its block of the system
+with a parallel CG).
+
+The particle-side constants are measured here: the per-particle time of
+pair search, assembly and solve and the memory per particle come from the
+particleSystemScaling report (its two largest sizes, where the fixed
+overheads no longer count); the fluid side's time per cell-step and memory
+per cell from the thesis box (validation/README.md, couetteTimeStep and
+couetteCost: 799 core-s per strain over 250 steps at 10^6 cells, 2.0-2.3
+GiB).  The network and the counts per step are assumptions, stated in
+ASSUMPTIONS and printed with the tables.
+
+    model.py [--system REPORT] [--out report.md]
+"""
+
+import argparse
+import math
+import os
+import re
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+ASSUMPTIONS = {
+    # Fluid side, measured on the thesis box (10^6 cells, 547 spheres)
+    "cellStepSeconds": 3.2e-6,   # core-s per cell and step, all of a step
+    "cellBytes": 2.2e3,          # resident bytes per cell
+    # The thesis' Couette boxes: cells per particle and particles per core
+    "cellsPerParticle": 1.0e6 / 547,
+    "particlesPerCore": 547 / 64,    # Table 4.9, phi0 0.42 on 64 cores
+    # Per step: outer iterations (integrals summed each), factorisations
+    # of the particle system (the step's and two relinearisations) and CG
+    # iterations per solve
+    "outerIterations": 4.7,
+    "factorisations": 3,
+    "cgIterations": 10,
+    # Geometry, in a1: the halo a ghost is needed within (the largest
+    # pair's centre distance at the sub-grid cut-off, 0.3 a_max: 2 a_max +
+    # 0.3 a_max, a_max = 1.4), number of scalars exchanged per particle
+    # (the support integrals of eq 2.43: 12; velocities: 6)
+    "halo": 2 * 1.4 + 0.3 * 1.4,
+    "integralScalars": 12,
+    "velocityScalars": 6,
+    "neighbourRanks": 26,
+    # Network: latency per message and bandwidth per rank (an InfiniBand
+    # cluster of the thesis' kind)
+    "latency": 2e-6,
+    "bandwidth": 10e9,
+}
+
+
+def read_system_report(path):
+    """Rows (N, search s, assembly s, solve s, peak MiB) of the
+    particleSystemScaling table."""
+    rows = []
+    with open(path) as f:
+        for line in f:
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            if len(cells) >= 8 and re.fullmatch(r"\d+", cells[0]):
+                n, search, assembly, solve = (float(cells[k])
+                                              for k in (0, 2, 3, 4))
+                rows.append((n, search, assembly, solve, float(cells[7])))
+    if len(rows) < 2:
+        raise SystemExit(f"model.py: {path} has fewer than two sizes with"
+                         " the peak-memory column (run"
+                         " ../particleSystemScaling/Allrun)")
+    return rows
+
+
+def particle_constants(rows):
+    """Seconds per particle for the step's search and assembly, per
+    factorised solve, and bytes per particle: slopes between the two
+    largest sizes."""
+    (n0, s0, a0, v0, m0), (n1, s1, a1, v1, m1) = rows[-2], rows[-1]
+    dn = n1 - n0
+    return {"setup": ((s1 + a1) - (s0 + a0)) / dn,
+            "solve": (v1 - v0) / dn,
+            "bytes": (m1 - m0) * 2**20 / dn}
+
+
+def ghosts(n, p, c):
+    """Ghost particles per rank: the particles within the halo of a cubic
+    subdomain of the rank's share of the volume (all the others at most)."""
+    volume = n * c["cellsPerParticle"] * 0.2**3      # Delta = a1/5
+    side = (volume / p) ** (1 / 3)
+    shell = (side + 2 * c["halo"]) ** 3 - side ** 3
+    return min(n - n / p, n / volume * shell) if p > 1 else 0.0
+
+
+def per_rank(n, p, c, k, owned):
+    """Memory [GiB], time per step [s] and bytes sent per step of one rank
+    with n particles on p ranks."""
+    cells = n * c["cellsPerParticle"] / p
+    held = n / p + ghosts(n, p, c) if owned else n
+    outer, fact = c["outerIterations"], c["factorisations"]
+    compute = (cells * c["cellStepSeconds"]
+               + held * (k["setup"] + fact * k["solve"]))
+    if p == 1:
+        sent, comm = 0.0, 0.0
+    elif owned:
+        g = ghosts(n, p, c)
+        per_outer = g * c["integralScalars"] * 8
+        per_cg = g * c["velocityScalars"] * 8
+        cgs = fact * c["cgIterations"]
+        sent = outer * per_outer + cgs * per_cg
+        messages = (outer + cgs) * c["neighbourRanks"] \
+            + cgs * 2 * math.log2(p)
+        comm = messages * c["latency"] + sent / c["bandwidth"]
+    else:
+        # The per-particle integrals of all particles summed over ranks
+        # (a tree gather and scatter of the whole list every outer iteration)
+        whole = n * c["integralScalars"] * 8
+        sent = outer * 2 * whole
+        comm = outer * 2 * math.log2(p) * (c["latency"]
+                                           + whole / c["bandwidth"])
+    memory = (cells * c["cellBytes"] + held * k["bytes"]) / 2**30
+    return memory, compute + comm, sent
+
+
+def table(title, header, rows):
+    out = [f"### {title}", "", "| " + " | ".join(header) + " |",
+           "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(r) + " |" for r in rows]
+    return out + [""]
+
+
+def strong_rows(c, k):
+    rows = []
+    for n in (1e3, 1e4, 1e5):
+        for p in (1, 2, 4, 8, 64, 256, 1024):
+            rep = per_rank(n, p, c, k, owned=False)
+            own = per_rank(n, p, c, k, owned=True)
+            rows.append([f"{n:.0e}", str(p), f"{ghosts(n, p, c):.0f}",
+                         f"{rep[0]:.3g}", f"{own[0]:.3g}",
+                         f"{rep[1]:.3g}", f"{own[1]:.3g}",
+                         f"{rep[2] / 2**20:.3g}", f"{own[2] / 2**20:.3g}"])
+    return rows
+
+
+def weak_rows(c, k):
+    rows = []
+    for n in (1e3, 1e4, 1e5):
+        p = max(1, round(n / c["particlesPerCore"]))
+        rep = per_rank(n, p, c, k, owned=False)
+        own = per_rank(n, p, c, k, owned=True)
+        rows.append([f"{n:.0e}", str(p), f"{rep[0]:.3g}", f"{own[0]:.3g}",
+                     f"{rep[1]:.3g}", f"{own[1]:.3g}"])
+    return rows
+
+
+def report(system_path):
+    c = ASSUMPTIONS
+    k = particle_constants(read_system_report(system_path))
+    lines = ["# Particles by subdomain: the replicated scheme's cost and"
+             " the owned scheme's model (issue 38)", "",
+             f"Measured particle constants ({os.path.relpath(system_path)}):"
+             f" {k['setup'] * 1e6:.1f} us per particle for search and"
+             f" assembly, {k['solve'] * 1e6:.1f} us per particle per"
+             f" factorised solve, {k['bytes'] / 1024:.1f} KiB per particle.",
+             "", "Assumptions: " + ", ".join(f"{key} {v:.4g}"
+                                             for key, v in c.items()), ""]
+    lines += table(
+        "Strong scaling: one rank, per step, at the thesis' cells per"
+        " particle",
+        ["N", "ranks", "ghosts", "GiB replicated", "GiB owned",
+         "s replicated", "s owned", "MiB sent replicated", "MiB sent owned"],
+        strong_rows(c, k))
+    lines += table(
+        "Weak scaling at the thesis' particles per core"
+        f" ({c['particlesPerCore']:.1f})",
+        ["N", "ranks", "GiB replicated", "GiB owned", "s replicated",
+         "s owned"], weak_rows(c, k))
+    return "\n".join(lines)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("--system", default=os.path.join(
+        HERE, "..", "particleSystemScaling", "report.md"))
+    ap.add_argument("--out", default=os.path.join(HERE, "report.md"))
+    args = ap.parse_args()
+    text = report(args.system)
+    with open(args.out, "w") as f:
+        f.write(text + "\n")
+    print(text)
+
+
+if __name__ == "__main__":
+    main()
