@@ -5,7 +5,7 @@
 
 #include "pairSubGridMatrix.H"
 #include "resistanceTensorForms.H"
-#include "particleVelocitySystem.H"
+#include "particleSystemSink.H"
 #include "error.H"
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
@@ -231,7 +231,7 @@ Foam::vector Foam::fdm::pairSubGridMatrix::strainTorque
 
 void Foam::fdm::pairSubGridMatrix::addTo
 (
-    particleVelocitySystem& sys,
+    particleSystemSink& sys,
     const label p,
     const label q,
     const scalar scale,
@@ -245,7 +245,7 @@ void Foam::fdm::pairSubGridMatrix::addTo
             << exit(FatalError);
     }
 
-    const label n = particleVelocitySystem::nDof;
+    const label n = particleSystemSink::nDof;
     const label offset[2] = {n*p, n*q};
 
     if (qImageVelocity != vector::zero)

@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleVelocitySystem.H"
-#include "rigidBodyMoments.H"
+#include "particleUnknowns.H"
 #include "error.H"
 #include "OFstream.H"
 #include "Pstream.H"
@@ -238,27 +238,6 @@ void Foam::fdm::particleVelocitySystem::addEntry
 }
 
 
-void Foam::fdm::particleVelocitySystem::addMass
-(
-    const label i,
-    const rigidBodyMoments& moments,
-    const scalar scale
-)
-{
-    for (direction r = 0; r < nDof; ++r)
-    {
-        for (direction c = 0; c < nDof; ++c)
-        {
-            const scalar m = moments.entry(r, c);
-            if (m != 0)
-            {
-                addEntry(nDof*i + r, nDof*i + c, scale*m);
-            }
-        }
-    }
-}
-
-
 void Foam::fdm::particleVelocitySystem::addRhs
 (
     const label i,
@@ -296,7 +275,6 @@ Foam::fdm::particleVelocitySystem::solve
     const scalar residualScale
 ) const
 {
-    const label n = nDof*nParticles_;
     const Eigen::VectorXd b
     (
         reducedRhs(rows_, cols_, values_, rhs_, prescribed_, prescribedValue_)
@@ -305,15 +283,8 @@ Foam::fdm::particleVelocitySystem::solve
     const sparseMatrix& A = f.A;
     preconditionedCG& cg = f.cg;
 
-    Eigen::VectorXd x(n);
-    for (label i = 0; i < nParticles_; ++i)
-    {
-        for (direction d = 0; d < 3; ++d)
-        {
-            x[nDof*i + d] = U[i][d];
-            x[nDof*i + 3 + d] = Omega[i][d];
-        }
-    }
+    Eigen::VectorXd x;
+    packUnknowns(U, Omega, nParticles_, x);
 
     // Eigen's tolerance is relative to the norm of b
     const scalar bNorm = b.norm();
@@ -332,15 +303,7 @@ Foam::fdm::particleVelocitySystem::solve
         (b - A*x).squaredNorm() <= sqr(relativeTolerance*bNorm);
 
     x = cg.solveWithGuess(b, x);
-
-    for (label i = 0; i < nParticles_; ++i)
-    {
-        for (direction d = 0; d < 3; ++d)
-        {
-            U[i][d] = x[nDof*i + d];
-            Omega[i][d] = x[nDof*i + 3 + d];
-        }
-    }
+    unpackUnknowns(x, U, Omega);
 
     solveInfo info;
     info.iterations =

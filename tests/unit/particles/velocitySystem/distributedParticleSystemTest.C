@@ -1,0 +1,149 @@
+// Unit tests for Foam::fdm::distributedParticleSystem (issue 38) on one
+// rank, against the whole-system solver particleVelocitySystem; the ranks
+// together are tested by tests/cases/distributedParticleSystem.sh
+
+#include "distributedParticleSystem.H"
+#include "particleVelocitySystem.H"
+#include "rigidBodyMoments.H"
+#include "unitTestHelpers.H"
+
+#include <gtest/gtest.h>
+
+using namespace Foam;
+
+namespace
+{
+
+const label nParticles = 5;
+
+fdm::rigidBodyMoments moments(const scalar s)
+{
+    fdm::rigidBodyMoments m;
+    m.add(1.0*s, vector(0.5, 0.1, -0.2), 1);
+    m.add(0.8*s, vector(-0.4, 0.3, 0.1), 1);
+    m.add(0.6*s, vector(0.1, -0.5, 0.4), 1);
+    return m;
+}
+
+// A chain of pairs (i, i+1) coupled by k (e e^T) on the translations and
+// on the rotations, a lubrication-like pattern, with masses and loads,
+// added the same way to either system
+void assemble(fdm::particleSystemSink& sys)
+{
+    for (label i = 0; i < nParticles; ++i)
+    {
+        sys.addMass(i, moments(1 + 0.3*i), 25);
+        sys.addRhs(i, vector(1 - i, 0.5*i, 2), vector(0.1, -0.2*i, 0.3));
+    }
+    for (label i = 0; i + 1 < nParticles; ++i)
+    {
+        const vector e = normalised(vector(1, 0.2*i, 0.5 - 0.1*i));
+        for (direction a = 0; a < 3; ++a)
+        {
+            for (direction b = 0; b < 3; ++b)
+            {
+                for (const label o : {0, 3})
+                {
+                    const scalar v = (o ? 40 : 300)*e[a]*e[b];
+                    const label p = 6*i + o + a, q = 6*(i + 1) + o;
+                    sys.addEntry(p, 6*i + o + b, v);
+                    sys.addEntry(p + 6, q + b, v);
+                    sys.addEntry(p, q + b, -v);
+                    sys.addEntry(p + 6, 6*i + o + b, -v);
+                }
+            }
+        }
+    }
+}
+
+} // namespace
+
+
+TEST(distributedParticleSystem, oneRankSolvesAsTheWholeSystem)
+{
+    fdm::particleVelocitySystem whole(nParticles);
+    fdm::distributedParticleSystem parts(nParticles, labelList(), labelList());
+    assemble(whole);
+    assemble(parts);
+    // Particle 2 held still in x and spun about z: eliminated in one,
+    // projected out in the other
+    whole.prescribe(2, 0, 0.25);
+    whole.prescribe(2, 5, -1);
+    parts.prescribe(2, 0, 0.25);
+    parts.prescribe(2, 5, -1);
+
+    List<vector> U1(nParticles, Zero), W1(nParticles, Zero);
+    List<vector> U2(U1), W2(W1);
+    const auto a = whole.solve(1e-12, 200, U1, W1);
+    const auto b = parts.solve(1e-12, 200, U2, W2);
+    EXPECT_TRUE(a.converged);
+    EXPECT_TRUE(b.converged);
+    EXPECT_GT(b.iterations, 0);
+    EXPECT_LE(b.relativeResidual, 1e-12);
+    EXPECT_EQ(U2[2].x(), 0.25);
+    EXPECT_EQ(W2[2].z(), -1);
+    for (label i = 0; i < nParticles; ++i)
+    {
+        EXPECT_LT(mag(U1[i] - U2[i]), 1e-9*mag(U1[i]) + 1e-12) << i;
+        EXPECT_LT(mag(W1[i] - W2[i]), 1e-9*mag(W1[i]) + 1e-12) << i;
+    }
+}
+
+
+TEST(distributedParticleSystem, stopsAtTheToleranceOfTheWholeSystem)
+{
+    // residualScale as particleVelocitySystem: the bound is tolerance
+    // times the smaller of the scale and the right-hand side's norm, and
+    // a solved guess takes no iteration
+    fdm::distributedParticleSystem parts(nParticles, labelList(), labelList());
+    assemble(parts);
+    List<vector> U(nParticles, Zero), W(nParticles, Zero);
+    const auto first = parts.solve(1e-3, 200, U, W, 1e-2);
+    EXPECT_TRUE(first.converged);
+    EXPECT_LE(first.relativeResidual, 1e-3);
+    const auto again = parts.solve(1e-3, 200, U, W, 1e-2);
+    EXPECT_EQ(again.iterations, 0);
+}
+
+
+TEST(distributedParticleSystem, dropsTheRowsOfOtherRanksParticles)
+{
+    // Entries and loads of rows beyond the owned particles are the
+    // ghosts' owners' to add: with 3 of the 5 particles owned and no
+    // columns beyond them, the rows kept are the 3-particle system's
+    fdm::particleVelocitySystem three(3);
+    fdm::distributedParticleSystem parts(3, labelList(), labelList());
+    for (label i = 0; i < nParticles; ++i)
+    {
+        const scalar m = 25*(1 + 0.3*i);
+        for (label d = 0; d < 6; ++d)
+        {
+            parts.addEntry(6*i + d, 6*i + d, m);
+            parts.addRhs(i, vector(1, 2, 3), vector(4, 5, 6));
+            if (i < 3)
+            {
+                three.addEntry(6*i + d, 6*i + d, m);
+                three.addRhs(i, vector(1, 2, 3), vector(4, 5, 6));
+            }
+        }
+    }
+    List<vector> U1(3, Zero), W1(3, Zero), U2(3, Zero), W2(3, Zero);
+    three.solve(1e-12, 50, U1, W1);
+    parts.solve(1e-12, 50, U2, W2);
+    forAll(U1, i)
+    {
+        EXPECT_LT(mag(U1[i] - U2[i]), 1e-12) << i;
+        EXPECT_LT(mag(W1[i] - W2[i]), 1e-12) << i;
+    }
+}
+
+
+TEST(distributedParticleSystem, aGhostBelongsToAnotherRank)
+{
+    const std::string message = unitTest::errorOf([]
+    {
+        fdm::distributedParticleSystem parts(2, labelList({0}), labelList({1}));
+    });
+    EXPECT_NE(message.find("belongs to another of the 1 ranks"),
+              std::string::npos) << message;
+}
