@@ -14,7 +14,8 @@ Description
     partners owned elsewhere, assembles the rows of its own particles and
     solves with the others (fdm::distributedParticleSystem).  Prints per
     lattice size the owned and ghost particles of the busiest rank, the
-    assembly and solve times (largest over ranks) and the CG iterations;
+    assembly and solve times, the solve's CPU time and the peak memory
+    (each the largest over ranks) and the CG iterations;
     with -compare, the master also solves the whole system
     (fdm::particleVelocitySystem, today's scheme, every rank alike) to the
     same tolerance and the largest difference of the velocities is printed
@@ -36,6 +37,8 @@ Description
 #include "distributedParticleSystem.H"
 #include "rigidBodyMoments.H"
 #include "clockTime.H"
+#include "cpuTime.H"
+#include "peakMemory.H"
 #include "constants.H"
 #include "IOstreams.H"
 
@@ -123,8 +126,9 @@ int main(int argc, char* argv[])
     );
 
     Info<< "| N | ranks | owned (largest) | ghosts (largest) | search s |"
-        << " assembly s | solve s | CG its | difference |" << nl
-        << "|---|---|---|---|---|---|---|---|---|" << nl;
+        << " assembly s | solve s | CG its | difference | solve cpu s |"
+        << " peak MiB |" << nl
+        << "|---|---|---|---|---|---|---|---|---|---|---|" << nl;
 
     for (const label n : sizes)
     {
@@ -181,8 +185,11 @@ int main(int argc, char* argv[])
         scalar tAssembly = clock.timeIncrement();
         const label nLocal = nOwned + ghostOwner.size();
         List<vector> U(nLocal, Zero), W(nLocal, Zero);
+        cpuTime cpu;
         const auto info = sys.solve(tol, 1000, U, W);
         scalar tSolve = clock.timeIncrement();
+        scalar cpuSolve = cpu.cpuTimeIncrement();
+        scalar peak = fdm::peakResidentBytes()/1048576;
 
         // The owned velocities on the master, against the whole system
         scalar difference = -1;
@@ -220,10 +227,12 @@ int main(int argc, char* argv[])
         reduce(tSearch, maxOp<scalar>());
         reduce(tAssembly, maxOp<scalar>());
         reduce(tSolve, maxOp<scalar>());
+        reduce(cpuSolve, maxOp<scalar>());
+        reduce(peak, maxOp<scalar>());
         Info<< "| " << N << " | " << nRanks << " | " << nOwned << " | "
             << nGhosts << " | " << tSearch << " | " << tAssembly << " | "
             << tSolve << " | " << info.iterations << " | " << difference
-            << " |" << endl;
+            << " | " << cpuSolve << " | " << peak << " |" << endl;
     }
 
     return 0;

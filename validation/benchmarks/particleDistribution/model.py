@@ -16,7 +16,7 @@ couetteCost: 799 core-s per strain over 250 steps at 10^6 cells, 2.0-2.3
 GiB).  The network and the counts per step are assumptions, stated in
 ASSUMPTIONS and printed with the tables.
 
-    model.py [--system REPORT] [--out report.md]
+    model.py [--system REPORT]          (prints the report)
 """
 
 import argparse
@@ -183,12 +183,8 @@ def main():
                                  formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--system", default=os.path.join(
         HERE, "..", "particleSystemScaling", "report.md"))
-    ap.add_argument("--out", default=os.path.join(HERE, "report.md"))
     args = ap.parse_args()
-    text = report(args.system)
-    with open(args.out, "w") as f:
-        f.write(text + "\n")
-    print(text)
+    print(report(args.system))
 
 
 if __name__ == "__main__":

@@ -28,30 +28,11 @@ Description
 #include "clockTime.H"
 #include "constants.H"
 #include "IOstreams.H"
+#include "peakMemory.H"
 
-#include <fstream>
 #include <random>
-#include <string>
 
 using namespace Foam;
-
-//- Peak resident memory of this process [MiB] (VmHWM, Linux)
-static scalar peakResidentMiB()
-{
-    std::ifstream status("/proc/self/status");
-    std::string key;
-    while (status >> key)
-    {
-        if (key == "VmHWM:")
-        {
-            scalar kiB = 0;
-            status >> kiB;
-            return kiB/1024;
-        }
-    }
-    return -1;
-}
-
 
 int main()
 {
@@ -123,7 +104,7 @@ int main()
             << " | " << tAssembly << " | " << tSolve << " | "
             << info.iterations << " | "
             << 1e6*(tSearch + tAssembly + tSolve)/N << " | "
-            << peakResidentMiB() << " |" << endl;
+            << fdm::peakResidentBytes()/1048576 << " |" << endl;
     }
 
     return 0;
