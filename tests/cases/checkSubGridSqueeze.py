@@ -70,7 +70,8 @@ check("|U_rel(sub-grid) / U_rel(theory) - 1|", err_sg, 0.03)
 check("error without sub-grid > 5 x error with it",
       5 * err_sg / err_none, 1.0)
 check("|U_1 + U_2| / U_rel", drift / with_sg, 2e-2)
-check("max |U(2 ranks) - U(serial)| / U_rel",
-      np.abs(velocities("parallel") - velocities("frameInvariant")).max()
-      / with_sg, 1e-5)
+for run in ("parallel", "distributed"):
+    check("max |U(2 ranks, %s) - U(serial)| / U_rel" % run,
+          np.abs(velocities(run) - velocities("frameInvariant")).max()
+          / with_sg, 1e-5)
 checks.finish()

@@ -2,9 +2,11 @@
 # Case test: two free spheres (a = 1, Delta = a/5) at a surface gap of
 # 0.02 a, pushed together by equal and opposite forces, walls at x = +-5,
 # cyclic in y and z.  Solved with the frameInvariant sub-grid lubrication
-# and without it, and with it on 2 ranks; checkSubGridSqueeze.py compares
-# the approach velocity with the two-sphere theory (Jeffrey & Onishi 1984)
-# and the parallel run with the serial one.
+# and without it, and with it on 2 ranks, the particle system solved whole
+# on each rank and by subdomain (particleSolve distributed: each rank
+# solves its sphere's rows, the other sphere a ghost);
+# checkSubGridSqueeze.py compares the approach velocity with the two-sphere
+# theory (Jeffrey & Onishi 1984) and the parallel runs with the serial one.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir subGridSqueeze)
@@ -24,11 +26,22 @@ do
 done
 
 # With the sub-grid model on 2 ranks, cut through the gap
-cloneCase subGridSqueeze "$work/parallel"
-(
-    cd "$work/parallel" || exit 1
-    runLogged blockMesh && runLogged decomposePar \
-        && runParallel2 fdmSuspensionFoam
-) || exit 1
+for run in parallel distributed
+do
+    cloneCase subGridSqueeze "$work/$run"
+    if [ "$run" = distributed ]
+    then
+        foamDictionary -entry coupling.particleSolve -set distributed \
+            "$work/$run/constant/particleProperties" > /dev/null || exit 1
+    fi
+    (
+        cd "$work/$run" || exit 1
+        runLogged blockMesh && runLogged decomposePar \
+            && runParallel2 fdmSuspensionFoam
+    ) || exit 1
+done
+grep -q "particle system solved by subdomain" \
+    "$work/distributed/log.fdmSuspensionFoam.parallel" \
+    || { echo "FAILED: the distributed run does not say it solves by subdomain"; exit 1; }
 
 "$FDM_PYTHON" "$caseTemplates/checkSubGridSqueeze.py" "$work"

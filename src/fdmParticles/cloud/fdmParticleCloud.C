@@ -201,7 +201,10 @@ void Foam::fdmParticleCloud::reportSetup() const
         << indicator_.c() << "; alpha_lambda = " << alphaLambda_ << nl
         << "    periodic (x y z): (" << box_.periodic(0) << ' '
         << box_.periodic(1) << ' ' << box_.periodic(2) << "), box "
-        << box_.min() << " + " << box_.span() << nl << endl;
+        << box_.min() << " + " << box_.span() << nl
+        << "    particle system solved "
+        << (distributedSolve_ ? "by subdomain (particleSolve distributed)"
+                              : "whole on every rank") << nl << endl;
 }
 
 
@@ -244,6 +247,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     firstSolveDone_(false),
     verbose_(true),
     system_(0),
+    distributedSolve_(false),
     contacts_(new noContacts(0)),
     lambdaPartsSum_(Zero),
     timings_{0, 0, 0, 0},

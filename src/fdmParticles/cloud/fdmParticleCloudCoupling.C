@@ -9,6 +9,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
+#include "ranksHoldingPoints.H"
 #include "adamsBashforth.H"
 #include "clockTime.H"
 #include "sumOverRanks.H"
@@ -35,6 +36,20 @@ void Foam::fdmParticleCloud::buildStencils()
     // Pseudo-mass moments (eq 2.53), summed over ranks
     moments_ = stencils_.moments(mesh_.V());
     fdm::sumOverRanks(moments_);
+
+    // The rank that solves each particle's rows: its centre's (the master
+    // for a centre in no rank's cells)
+    if (distributedSolve_)
+    {
+        owner_ = fdm::ranksHoldingPoints
+        (
+            state_.position, mesh_.C().primitiveField(), cellBins_(), delta_
+        );
+        forAll(owner_, p)
+        {
+            owner_[p] = owner_[p] < 0 ? Pstream::masterNo() : owner_[p];
+        }
+    }
 
     timings_.indicators += clock.elapsedTime();
 }
@@ -249,10 +264,17 @@ Foam::scalar Foam::fdmParticleCloud::correct
         relinearisePairs();
     }
     const scalar residualScale = assembleSystem(sums);
-    lastSolve_ = system_.solve
-    (
-        solveTolerance_, 1000, state_.U, state_.Omega, residualScale
-    );
+    lastSolve_ =
+        distributedSolve_
+      ? ownedSolve_.solve
+        (
+            system_, owner_, solveTolerance_, 1000, state_.U, state_.Omega,
+            residualScale
+        )
+      : system_.solve
+        (
+            solveTolerance_, 1000, state_.U, state_.Omega, residualScale
+        );
     if (!lastSolve_.converged)
     {
         WarningInFunction

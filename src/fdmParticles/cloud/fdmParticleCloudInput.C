@@ -55,7 +55,7 @@ void Foam::fdmParticleCloud::readCoupling()
             "lambdaTolerance", "lambdaToleranceFirstStep",
             "lambdaToleranceBetweenRecords",
             "particleSolveTolerance", "alphaLambdaFactor", "overlaps",
-            "maxParticleCourant", "positionScheme"
+            "maxParticleCourant", "positionScheme", "particleSolve"
         },
         "coupling block"
     );
@@ -76,6 +76,13 @@ void Foam::fdmParticleCloud::readCoupling()
         scheme == "euler"
       ? fdm::positionScheme::euler
       : fdm::positionScheme::adamsBashforth2;
+
+    const word solve(c.getOrDefault<word>("particleSolve", "replicated"));
+    fdm::checkChoice
+    (
+        c, "particleSolve", solve, {"replicated", "distributed"}
+    );
+    distributedSolve_ = (solve == "distributed");
 
     fdm::lambdaTolerances& t = lambdaTolerances_;
     t.recorded = c.get<scalar>("lambdaTolerance");

@@ -264,7 +264,7 @@ void Foam::particleContacts::advance
 
 void Foam::particleContacts::addTo
 (
-    fdm::particleVelocitySystem& system,
+    fdm::particleSystemSink& system,
     const fdm::fluidProperties& fluid
 ) const
 {

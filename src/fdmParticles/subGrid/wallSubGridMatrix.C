@@ -5,7 +5,7 @@
 
 #include "wallSubGridMatrix.H"
 #include "resistanceTensorForms.H"
-#include "particleVelocitySystem.H"
+#include "particleSystemSink.H"
 #include "error.H"
 
 // * * * * * * * * * * * * * Static Member Functions * * * * * * * * * * * * //
@@ -143,13 +143,13 @@ Foam::vector Foam::fdm::wallSubGridMatrix::strainTorque
 
 void Foam::fdm::wallSubGridMatrix::addTo
 (
-    particleVelocitySystem& sys,
+    particleSystemSink& sys,
     const label p,
     const vector& Uw,
     const scalar scale
 ) const
 {
-    const label o = particleVelocitySystem::nDof*p;
+    const label o = particleSystemSink::nDof*p;
     for (label i = 0; i < nDof; ++i)
     {
         for (label j = 0; j < nDof; ++j)

@@ -7,6 +7,7 @@
 // found below the floor is pushed back above it by converged solves.
 
 #include "particleContacts.H"
+#include "particleVelocitySystem.H"
 #include "pairSearch.H"
 #include "unitTestCase.H"
 #include "unitTestHelpers.H"

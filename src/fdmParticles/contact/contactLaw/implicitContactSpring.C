@@ -98,7 +98,7 @@ Foam::scalar Foam::fdm::implicitContactSpring::approach
 
 void Foam::fdm::implicitContactSpring::addTo
 (
-    particleVelocitySystem& system,
+    particleSystemSink& system,
     const scalar scale
 ) const
 {
@@ -106,7 +106,7 @@ void Foam::fdm::implicitContactSpring::addTo
     operators(B);
     const scalar weight[4] = {kt_, kt_, kt_, kn_};
 
-    const label n = particleVelocitySystem::nDof;
+    const label n = particleSystemSink::nDof;
     const label nCols = j_ >= 0 ? 12 : 6;
     auto global = [&](const label c)
     {

@@ -10,7 +10,7 @@ Description
 \*---------------------------------------------------------------------------*/
 
 #include "couplingStencils.H"
-#include "particleVelocitySystem.H"
+#include "particleSystemSink.H"
 #include "labelPairHashes.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -162,7 +162,7 @@ void Foam::fdm::couplingStencils::addOverlapBlocks
 (
     const UList<labelPair>& pairs,
     const UList<overlapBlock>& blocks,
-    particleVelocitySystem& system
+    particleSystemSink& system
 )
 {
     forAll(pairs, k)

@@ -189,8 +189,11 @@ void Foam::fdm::distributedParticleSystem::prescribe
     const scalar value
 )
 {
-    prescribed_[nDof*i + dof] = true;
-    prescribedValue_[nDof*i + dof] = value;
+    if (i < nOwned_)
+    {
+        prescribed_[nDof*i + dof] = true;
+        prescribedValue_[nDof*i + dof] = value;
+    }
 }
 
 

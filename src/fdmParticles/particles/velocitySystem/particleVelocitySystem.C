@@ -315,6 +315,49 @@ Foam::fdm::particleVelocitySystem::solve
 }
 
 
+void Foam::fdm::particleVelocitySystem::replay
+(
+    particleSystemSink& sink,
+    const labelUList& local
+) const
+{
+    const auto renumbered = [&](const label k)
+    {
+        const label p = local[k/nDof];
+        return p < 0 ? -1 : nDof*p + k % nDof;
+    };
+    forAll(values_, e)
+    {
+        const label r = renumbered(rows_[e]), c = renumbered(cols_[e]);
+        if (r >= 0 && c >= 0)
+        {
+            sink.addEntry(r, c, values_[e]);
+        }
+    }
+    forAll(local, p)
+    {
+        if (local[p] < 0)
+        {
+            continue;
+        }
+        const label o = nDof*p;
+        sink.addRhs
+        (
+            local[p],
+            vector(rhs_[o], rhs_[o + 1], rhs_[o + 2]),
+            vector(rhs_[o + 3], rhs_[o + 4], rhs_[o + 5])
+        );
+        for (direction d = 0; d < nDof; ++d)
+        {
+            if (prescribed_[o + d])
+            {
+                sink.prescribe(local[p], d, prescribedValue_[o + d]);
+            }
+        }
+    }
+}
+
+
 void Foam::fdm::particleVelocitySystem::multiply
 (
     const List<vector>& U,

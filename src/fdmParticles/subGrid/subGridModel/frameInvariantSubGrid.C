@@ -332,7 +332,7 @@ void Foam::frameInvariantSubGrid::updateWallGaps
 
 void Foam::frameInvariantSubGrid::addTo
 (
-    fdm::particleVelocitySystem& system,
+    fdm::particleSystemSink& system,
     const fdm::fluidProperties& fluid
 ) const
 {

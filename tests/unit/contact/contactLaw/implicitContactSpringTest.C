@@ -3,6 +3,7 @@
 // particle system)
 
 #include "implicitContactSpring.H"
+#include "particleVelocitySystem.H"
 #include "contactLoads.H"
 #include "pairFrameShift.H"
 

@@ -6,6 +6,7 @@
 // models reach nothing and add nothing.
 
 #include "pairInteraction.H"
+#include "particleVelocitySystem.H"
 #include "subGridModel.H"
 #include "contactModel.H"
 #include "pairSearch.H"

@@ -6,57 +6,12 @@
 #include "particleVelocitySystem.H"
 #include "rigidBodyMoments.H"
 #include "unitTestHelpers.H"
+#include "particleSystemFixtures.H"
 
 #include <gtest/gtest.h>
 
 using namespace Foam;
-
-namespace
-{
-
-const label nParticles = 5;
-
-fdm::rigidBodyMoments moments(const scalar s)
-{
-    fdm::rigidBodyMoments m;
-    m.add(1.0*s, vector(0.5, 0.1, -0.2), 1);
-    m.add(0.8*s, vector(-0.4, 0.3, 0.1), 1);
-    m.add(0.6*s, vector(0.1, -0.5, 0.4), 1);
-    return m;
-}
-
-// A chain of pairs (i, i+1) coupled by k (e e^T) on the translations and
-// on the rotations, a lubrication-like pattern, with masses and loads,
-// added the same way to either system
-void assemble(fdm::particleSystemSink& sys)
-{
-    for (label i = 0; i < nParticles; ++i)
-    {
-        sys.addMass(i, moments(1 + 0.3*i), 25);
-        sys.addRhs(i, vector(1 - i, 0.5*i, 2), vector(0.1, -0.2*i, 0.3));
-    }
-    for (label i = 0; i + 1 < nParticles; ++i)
-    {
-        const vector e = normalised(vector(1, 0.2*i, 0.5 - 0.1*i));
-        for (direction a = 0; a < 3; ++a)
-        {
-            for (direction b = 0; b < 3; ++b)
-            {
-                for (const label o : {0, 3})
-                {
-                    const scalar v = (o ? 40 : 300)*e[a]*e[b];
-                    const label p = 6*i + o + a, q = 6*(i + 1) + o;
-                    sys.addEntry(p, 6*i + o + b, v);
-                    sys.addEntry(p + 6, q + b, v);
-                    sys.addEntry(p, q + b, -v);
-                    sys.addEntry(p + 6, 6*i + o + b, -v);
-                }
-            }
-        }
-    }
-}
-
-} // namespace
+using namespace particleSystemFixtures;
 
 
 TEST(distributedParticleSystem, oneRankSolvesAsTheWholeSystem)

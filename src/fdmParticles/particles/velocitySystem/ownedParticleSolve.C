@@ -1,0 +1,119 @@
+/*---------------------------------------------------------------------------*\
+  fdmSuspension: particle-resolved simulation of dense suspensions
+  License: GPL-3.0-or-later (see LICENSE)
+\*---------------------------------------------------------------------------*/
+
+#include "ownedParticleSolve.H"
+#include "sumOverRanks.H"
+#include "PstreamReduceOps.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+Foam::labelList Foam::fdm::ownedParticleSolve::localNumbers
+(
+    const particleVelocitySystem& whole,
+    const labelUList& owner,
+    DynamicList<label>& ghostOwner,
+    DynamicList<label>& ghostIndex
+) const
+{
+    const label me = Pstream::myProcNo();
+    const label nDof = particleSystemSink::nDof;
+    labelList local(owner.size(), -1), ownerIndex(owner.size());
+    labelList counts(Pstream::nProcs(), 0);
+    forAll(owner, p)
+    {
+        ownerIndex[p] = counts[owner[p]]++;
+        local[p] = owner[p] == me ? ownerIndex[p] : -1;
+    }
+    const labelUList& rows = whole.entryRows();
+    const labelUList& cols = whole.entryCols();
+    forAll(rows, e)
+    {
+        const label p = rows[e]/nDof, q = cols[e]/nDof;
+        if (owner[p] == me && local[q] < 0)
+        {
+            local[q] = counts[me] + ghostOwner.size();
+            ghostOwner.append(owner[q]);
+            ghostIndex.append(ownerIndex[q]);
+        }
+    }
+    return local;
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::fdm::particleVelocitySystem::solveInfo
+Foam::fdm::ownedParticleSolve::solve
+(
+    const particleVelocitySystem& whole,
+    const labelUList& owner,
+    const scalar tolerance,
+    const label maxIterations,
+    List<vector>& U,
+    List<vector>& Omega,
+    const scalar residualScale
+)
+{
+    DynamicList<label> ghostOwner, ghostIndex;
+    const labelList local(localNumbers(whole, owner, ghostOwner, ghostIndex));
+
+    // Made anew on every rank when the owners or any rank's ghosts changed
+    // (the constructor exchanges with all ranks)
+    bool remake = !system_ || local != local_ || owner != owner_;
+    reduce(remake, orOp<bool>());
+    if (remake)
+    {
+        label nOwned = 0;
+        forAll(owner, p)
+        {
+            nOwned += (owner[p] == Pstream::myProcNo());
+        }
+        system_.reset
+        (
+            new distributedParticleSystem(nOwned, ghostOwner, ghostIndex)
+        );
+        owner_ = owner;
+        local_ = local;
+    }
+    system_->clear();
+    whole.replay(*system_, local);
+
+    const label nLocal = system_->nOwned() + system_->nGhosts();
+    List<vector> u(nLocal), w(nLocal);
+    forAll(local, p)
+    {
+        if (local[p] >= 0)
+        {
+            u[local[p]] = U[p];
+            w[local[p]] = Omega[p];
+        }
+    }
+    const particleVelocitySystem::solveInfo info =
+        system_->solve(tolerance, maxIterations, u, w, residualScale);
+
+    // Every particle's velocities from its owner (the others add zero)
+    List<scalar> all(6*U.size(), Zero);
+    forAll(local, p)
+    {
+        if (local[p] >= 0 && local[p] < system_->nOwned())
+        {
+            for (direction d = 0; d < 3; ++d)
+            {
+                all[6*p + d] = u[local[p]][d];
+                all[6*p + 3 + d] = w[local[p]][d];
+            }
+        }
+    }
+    sumOverRanks(all);
+    forAll(U, p)
+    {
+        U[p] = vector(all[6*p], all[6*p + 1], all[6*p + 2]);
+        Omega[p] = vector(all[6*p + 3], all[6*p + 4], all[6*p + 5]);
+    }
+    return info;
+}
+
+
+// ************************************************************************* //
