@@ -22,9 +22,7 @@ Foam::fdm::distributedParticleSystem::distributedParticleSystem
     nGhosts_(ghostOwner.size()),
     sendTo_(Pstream::nProcs()),
     receiveFrom_(Pstream::nProcs()),
-    rhs_(nDof*nOwned, Zero),
-    prescribedValue_(nDof*nOwned, Zero),
-    prescribed_(nDof*nOwned, false)
+    entries_(nOwned)
 {
     // Group the ghosts by owner: which of its particles each owner sends
     List<DynamicList<label>> requests(Pstream::nProcs());
@@ -139,12 +137,7 @@ void Foam::fdm::distributedParticleSystem::exchange(scalar* x) const
 
 void Foam::fdm::distributedParticleSystem::clear()
 {
-    rows_.clear();
-    cols_.clear();
-    values_.clear();
-    rhs_ = Zero;
-    prescribedValue_ = Zero;
-    prescribed_ = false;
+    entries_.clear();
 }
 
 
@@ -157,9 +150,7 @@ void Foam::fdm::distributedParticleSystem::addEntry
 {
     if (row < nDof*nOwned_)
     {
-        rows_.append(row);
-        cols_.append(col);
-        values_.append(value);
+        entries_.add(row, col, value);
     }
 }
 
@@ -173,11 +164,7 @@ void Foam::fdm::distributedParticleSystem::addRhs
 {
     if (i < nOwned_)
     {
-        for (direction d = 0; d < 3; ++d)
-        {
-            rhs_[nDof*i + d] += force[d];
-            rhs_[nDof*i + 3 + d] += torque[d];
-        }
+        entries_.addRhs(i, force, torque);
     }
 }
 
@@ -191,8 +178,7 @@ void Foam::fdm::distributedParticleSystem::prescribe
 {
     if (i < nOwned_)
     {
-        prescribed_[nDof*i + dof] = true;
-        prescribedValue_[nDof*i + dof] = value;
+        entries_.prescribe(i, dof, value);
     }
 }
 

@@ -14,7 +14,6 @@ Description
 #include "PstreamReduceOps.H"
 #include "error.H"
 
-
 namespace
 {
 
@@ -86,44 +85,40 @@ Foam::label conjugateGradients
 } // namespace
 
 
-
-
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 const Foam::fdm::distributedParticleSystem::operators&
 Foam::fdm::distributedParticleSystem::built() const
 {
-    if (operators_ && operators_->madeFrom(*this))
+    if (operators_ && operators_->from.sameMatrix(entries_))
     {
         return *operators_;
     }
     operators_.reset(new operators());
     operators& o = *operators_;
-    o.rows = rows_;
-    o.cols = cols_;
-    o.values = values_;
-    o.prescribed = prescribed_;
+    o.from = entries_;
+    const particleSystemEntries& e = entries_;
 
     const label n = nDof*nOwned_;
     std::vector<triplet> all, owned;
-    all.reserve(values_.size());
-    owned.reserve(values_.size() + n);
-    forAll(values_, e)
+    all.reserve(e.values.size());
+    owned.reserve(e.values.size() + n);
+    forAll(e.values, k)
     {
-        const label r = rows_[e], c = cols_[e];
-        if (prescribed_[r])
+        const label r = e.rows[k], c = e.cols[k];
+        if (e.prescribed[r])
         {
             continue;
         }
-        all.push_back(triplet(r, c, values_[e]));
-        if (c < n && !prescribed_[c])
+        all.push_back(triplet(r, c, e.values[k]));
+        if (c < n && !e.prescribed[c])
         {
-            owned.push_back(triplet(r, c, values_[e]));
+            owned.push_back(triplet(r, c, e.values[k]));
         }
     }
     for (label k = 0; k < n; ++k)
     {
-        if (prescribed_[k])
+        if (e.prescribed[k])
         {
             owned.push_back(triplet(k, k, 1));
         }
@@ -181,8 +176,8 @@ Foam::fdm::distributedParticleSystem::solve
     Eigen::VectorXd xp = Eigen::VectorXd::Zero(nDof*nLocal);
     for (long k = 0; k < n; ++k)
     {
-        rhs[k] = prescribed_[k] ? 0 : rhs_[k];
-        xp[k] = prescribed_[k] ? prescribedValue_[k] : 0;
+        rhs[k] = entries_.prescribed[k] ? 0 : entries_.rhs[k];
+        xp[k] = entries_.prescribed[k] ? entries_.prescribedValue[k] : 0;
     }
     exchange(xp.data());
     const Eigen::VectorXd b = rhs - o.A*xp;
@@ -198,7 +193,7 @@ Foam::fdm::distributedParticleSystem::solve
     packUnknowns(U, Omega, nLocal, x);
     for (long k = 0; k < n; ++k)
     {
-        x[k] = prescribed_[k] ? prescribedValue_[k] : x[k];
+        x[k] = entries_.prescribed[k] ? entries_.prescribedValue[k] : x[k];
     }
     exchange(x.data());
 

@@ -147,21 +147,11 @@ void factorise(const sparseMatrix& A, preconditionedCG& cg)
 
 struct Foam::fdm::particleVelocitySystem::factorisation
 {
-    // What the matrix was made from
-    List<label> rows;
-    List<label> cols;
-    List<scalar> values;
-    List<bool> prescribed;
+    //- What the matrix was made from
+    particleSystemEntries from;
 
     sparseMatrix A;
     preconditionedCG cg;
-
-    bool madeFrom(const particleVelocitySystem& s) const
-    {
-        return
-            rows == s.rows_ && cols == s.cols_ && values == s.values_
-         && prescribed == s.prescribed_;
-    }
 };
 
 
@@ -173,9 +163,7 @@ Foam::fdm::particleVelocitySystem::particleVelocitySystem
 )
 :
     nParticles_(nParticles),
-    rhs_(nDof*nParticles, Zero),
-    prescribedValue_(nDof*nParticles, Zero),
-    prescribed_(nDof*nParticles, false)
+    entries_(nParticles)
 {}
 
 
@@ -197,15 +185,13 @@ Foam::fdm::particleVelocitySystem::operator=(particleVelocitySystem&&) =
 Foam::fdm::particleVelocitySystem::factorisation&
 Foam::fdm::particleVelocitySystem::factorised() const
 {
-    if (!factorised_ || !factorised_->madeFrom(*this))
+    if (!factorised_ || !factorised_->from.sameMatrix(entries_))
     {
         factorised_.reset(new factorisation());
         factorisation& f = *factorised_;
-        f.rows = rows_;
-        f.cols = cols_;
-        f.values = values_;
-        f.prescribed = prescribed_;
-        f.A = reducedMatrix(rows_, cols_, values_, prescribed_);
+        f.from = entries_;
+        const particleSystemEntries& e = entries_;
+        f.A = reducedMatrix(e.rows, e.cols, e.values, e.prescribed);
         factorise(f.A, f.cg);
     }
     return *factorised_;
@@ -216,12 +202,7 @@ Foam::fdm::particleVelocitySystem::factorised() const
 
 void Foam::fdm::particleVelocitySystem::clear()
 {
-    rows_.clear();
-    cols_.clear();
-    values_.clear();
-    rhs_ = Zero;
-    prescribedValue_ = Zero;
-    prescribed_ = false;
+    entries_.clear();
 }
 
 
@@ -232,9 +213,7 @@ void Foam::fdm::particleVelocitySystem::addEntry
     const scalar value
 )
 {
-    rows_.append(row);
-    cols_.append(col);
-    values_.append(value);
+    entries_.add(row, col, value);
 }
 
 
@@ -245,11 +224,7 @@ void Foam::fdm::particleVelocitySystem::addRhs
     const vector& torque
 )
 {
-    for (direction d = 0; d < 3; ++d)
-    {
-        rhs_[nDof*i + d] += force[d];
-        rhs_[nDof*i + 3 + d] += torque[d];
-    }
+    entries_.addRhs(i, force, torque);
 }
 
 
@@ -260,8 +235,7 @@ void Foam::fdm::particleVelocitySystem::prescribe
     const scalar value
 )
 {
-    prescribed_[nDof*i + dof] = true;
-    prescribedValue_[nDof*i + dof] = value;
+    entries_.prescribe(i, dof, value);
 }
 
 
@@ -277,7 +251,11 @@ Foam::fdm::particleVelocitySystem::solve
 {
     const Eigen::VectorXd b
     (
-        reducedRhs(rows_, cols_, values_, rhs_, prescribed_, prescribedValue_)
+        reducedRhs
+        (
+            entries_.rows, entries_.cols, entries_.values, entries_.rhs,
+            entries_.prescribed, entries_.prescribedValue
+        )
     );
     factorisation& f = factorised();
     const sparseMatrix& A = f.A;
@@ -326,12 +304,12 @@ void Foam::fdm::particleVelocitySystem::replay
         const label p = local[k/nDof];
         return p < 0 ? -1 : nDof*p + k % nDof;
     };
-    forAll(values_, e)
+    forAll(entries_.values, e)
     {
-        const label r = renumbered(rows_[e]), c = renumbered(cols_[e]);
+        const label r = renumbered(entries_.rows[e]), c = renumbered(entries_.cols[e]);
         if (r >= 0 && c >= 0)
         {
-            sink.addEntry(r, c, values_[e]);
+            sink.addEntry(r, c, entries_.values[e]);
         }
     }
     forAll(local, p)
@@ -344,14 +322,14 @@ void Foam::fdm::particleVelocitySystem::replay
         sink.addRhs
         (
             local[p],
-            vector(rhs_[o], rhs_[o + 1], rhs_[o + 2]),
-            vector(rhs_[o + 3], rhs_[o + 4], rhs_[o + 5])
+            vector(entries_.rhs[o], entries_.rhs[o + 1], entries_.rhs[o + 2]),
+            vector(entries_.rhs[o + 3], entries_.rhs[o + 4], entries_.rhs[o + 5])
         );
         for (direction d = 0; d < nDof; ++d)
         {
-            if (prescribed_[o + d])
+            if (entries_.prescribed[o + d])
             {
-                sink.prescribe(local[p], d, prescribedValue_[o + d]);
+                sink.prescribe(local[p], d, entries_.prescribedValue[o + d]);
             }
         }
     }
@@ -371,10 +349,10 @@ void Foam::fdm::particleVelocitySystem::multiply
     force = Zero;
     torque = Zero;
 
-    forAll(values_, e)
+    forAll(entries_.values, e)
     {
-        const label r = rows_[e];
-        const label c = cols_[e];
+        const label r = entries_.rows[e];
+        const label c = entries_.cols[e];
         const label pc = c/nDof;
         const direction dc = c % nDof;
         const scalar x = dc < 3 ? U[pc][dc] : Omega[pc][dc - 3];
@@ -383,11 +361,11 @@ void Foam::fdm::particleVelocitySystem::multiply
         const direction dr = r % nDof;
         if (dr < 3)
         {
-            force[pr][dr] += values_[e]*x;
+            force[pr][dr] += entries_.values[e]*x;
         }
         else
         {
-            torque[pr][dr - 3] += values_[e]*x;
+            torque[pr][dr - 3] += entries_.values[e]*x;
         }
     }
 }
