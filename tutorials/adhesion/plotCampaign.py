@@ -41,10 +41,15 @@ THESIS_PHI_J = 0.592   # mu = 0.5 without adhesion (section 5.4.4)
 
 def rows_from_runs(folders, start):
     """A row per phi*_G*/ case of the folders (checkpoints or runs; a case
-    in several, the one that reached the largest strain)."""
+    in several, the one that reached the largest strain) that has run past
+    the averaging start."""
     rows = []
     for name, records in checkpoint.records_by_case(
             folders, "phi*_G*", wall_layer).items():
+        if records.strain() <= start:
+            print(f"{name}: at strain {records.strain():.1f}, not past the"
+                  f" averaging start {start}: left out")
+            continue
         p = adhesion_records(records, start)
         row = {"case": name,
                "phi0": float(re.match(r"phi([0-9.]+)_", name).group(1))}
