@@ -3,8 +3,8 @@
 # 0.02 a, pushed together by equal and opposite forces, walls at x = +-5,
 # cyclic in y and z.  Solved with the frameInvariant sub-grid lubrication
 # and without it, and with it on 2 ranks, the particle system solved whole
-# on each rank and by subdomain (particleSolve distributed: each rank
-# solves its sphere's rows, the other sphere a ghost);
+# on each rank and by subdomain (parallelParticleSolve distributed: each
+# rank solves its sphere's rows, the other sphere a ghost);
 # checkSubGridSqueeze.py compares the approach velocity with the two-sphere
 # theory (Jeffrey & Onishi 1984) and the parallel runs with the serial one.
 source "${0%/*}/caseTestFunctions"
@@ -31,7 +31,7 @@ do
     cloneCase subGridSqueeze "$work/$run"
     if [ "$run" = distributed ]
     then
-        foamDictionary -entry coupling.particleSolve -set distributed \
+        foamDictionary -entry coupling.parallelParticleSolve -set distributed \
             "$work/$run/constant/particleProperties" > /dev/null || exit 1
     fi
     (

@@ -203,8 +203,11 @@ void Foam::fdmParticleCloud::reportSetup() const
         << box_.periodic(1) << ' ' << box_.periodic(2) << "), box "
         << box_.min() << " + " << box_.span() << nl
         << "    particle system solved "
-        << (distributedSolve_ ? "by subdomain (particleSolve distributed)"
-                              : "whole on every rank") << nl << endl;
+        << (
+               distributedSolve_
+             ? "by subdomain (parallelParticleSolve distributed)"
+             : "whole on every rank"
+           ) << nl << endl;
 }
 
 

@@ -55,7 +55,7 @@ void Foam::fdmParticleCloud::readCoupling()
             "lambdaTolerance", "lambdaToleranceFirstStep",
             "lambdaToleranceBetweenRecords",
             "particleSolveTolerance", "alphaLambdaFactor", "overlaps",
-            "maxParticleCourant", "positionScheme", "particleSolve"
+            "maxParticleCourant", "positionScheme", "parallelParticleSolve"
         },
         "coupling block"
     );
@@ -77,10 +77,13 @@ void Foam::fdmParticleCloud::readCoupling()
       ? fdm::positionScheme::euler
       : fdm::positionScheme::adamsBashforth2;
 
-    const word solve(c.getOrDefault<word>("particleSolve", "replicated"));
+    const word solve
+    (
+        c.getOrDefault<word>("parallelParticleSolve", "replicated")
+    );
     fdm::checkChoice
     (
-        c, "particleSolve", solve, {"replicated", "distributed"}
+        c, "parallelParticleSolve", solve, {"replicated", "distributed"}
     );
     distributedSolve_ = (solve == "distributed");
 

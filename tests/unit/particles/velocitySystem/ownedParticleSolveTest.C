@@ -1,7 +1,7 @@
 // Unit tests for Foam::fdm::ownedParticleSolve (issue 38) on one rank: the
 // whole system solved by its owner gives the whole system's velocities and
 // keeps its distributed system while the owners stay; the ranks together
-// are tested by tests/cases/subGridSqueeze.sh (particleSolve distributed)
+// are tested by tests/cases/subGridSqueeze.sh (parallelParticleSolve distributed)
 
 #include "ownedParticleSolve.H"
 #include "particleSystemFixtures.H"
