@@ -184,9 +184,7 @@ Foam::fdm::distributedParticleSystem::solve
     const scalar bNorm =
         std::sqrt(globalDot(b, b, n) + globalDot(xp, xp, n));
     const scalar relativeTolerance =
-        residualScale > 0 && bNorm > 0
-      ? min(tolerance*residualScale/bNorm, tolerance)
-      : tolerance;
+        relativeSolveTolerance(tolerance, residualScale, bNorm);
     const scalar bound = relativeTolerance*bNorm;
 
     Eigen::VectorXd x;

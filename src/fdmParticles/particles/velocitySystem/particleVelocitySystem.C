@@ -267,9 +267,7 @@ Foam::fdm::particleVelocitySystem::solve
     // Eigen's tolerance is relative to the norm of b
     const scalar bNorm = b.norm();
     const scalar relativeTolerance =
-        residualScale > 0 && bNorm > 0
-      ? min(tolerance*residualScale/bNorm, tolerance)
-      : tolerance;
+        relativeSolveTolerance(tolerance, residualScale, bNorm);
     cg.setTolerance(relativeTolerance);
     cg.setMaxIterations(maxIterations);
 
