@@ -61,7 +61,8 @@ Foam::label conjugateGradients
     Foam::label iterations = 0;
     for (; rr > bound*bound && iterations < maxIterations; ++iterations)
     {
-        const Eigen::VectorXd z = M.solve(r);
+        // A rank that owns no particle still takes part in the reductions
+        const Eigen::VectorXd z = n ? M.solve(r) : r;
         const double rzNew = globalDot(r, z, n);
         p.head(n) = z + (iterations ? rzNew/rz : 0)*p.head(n);
         rz = rzNew;
@@ -126,6 +127,10 @@ Foam::fdm::distributedParticleSystem::built() const
     o.A.resize(n, nDof*(nOwned_ + nGhosts_));
     o.A.setFromTriplets(all.begin(), all.end());
 
+    if (n == 0)
+    {
+        return o;   // this rank owns no particle: nothing to factorise
+    }
     columnMatrix block(n, n);
     block.setFromTriplets(owned.begin(), owned.end());
     // As particleVelocitySystem: a larger diagonal shift when the

@@ -102,3 +102,15 @@ TEST(distributedParticleSystem, aGhostBelongsToAnotherRank)
     EXPECT_NE(message.find("belongs to another of the 1 ranks"),
               std::string::npos) << message;
 }
+
+
+TEST(distributedParticleSystem, aRankWithoutParticlesTakesPart)
+{
+    // A rank whose cells hold no centre owns no rows: it has nothing to
+    // factorise and still joins every reduction of the solve
+    fdm::distributedParticleSystem none(0, labelList(), labelList());
+    List<vector> U, W;
+    const auto info = none.solve(1e-10, 200, U, W, 1);
+    EXPECT_TRUE(info.converged);
+    EXPECT_EQ(info.iterations, 0);
+}

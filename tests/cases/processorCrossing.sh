@@ -1,0 +1,47 @@
+#!/bin/bash
+# Case test (issue 38): one free sphere (a = 1, Delta = a/4) settling along
+# x in a periodic cube L = 5a under a buoyant weight that moves it about one
+# radius per unit time, from x = 2.1 to time 3.6 in 18 steps: it crosses the
+# processor boundary at x = 2.5 of a 2-rank decomposition along x, then the
+# cyclic patch at x = 5, which on 2 ranks is also a processorCyclic boundary.
+# Run serially and on 2 ranks with the particle system solved by subdomain
+# (parallelParticleSolve distributed), where the rank that solves the
+# sphere's rows changes at each crossing, and the other rank owns none.  (On
+# 2 ranks with the system solved whole on every rank the trajectory is the
+# distributed one to the last printed digit: 3e-8 from the serial one.)
+# Checks in checkProcessorCrossing.py.
+source "${0%/*}/caseTestFunctions"
+source "$caseTemplates/periodicArraySetup"
+
+work=$(caseWorkDir processorCrossing)
+# Buoyant weight L^3 g along x (periodicArraySetup's settling sphere) with
+# g = 0.32: U about 1 (Hasimoto, phi 0.0335)
+periodicArrayCase "$work/serial" 5 2.1 2.55 2.45 1e-8 2000 settling 4 \
+    || exit 1
+tightenAndAccelerate "$work/serial" 1e-9 || exit 1
+for entry in "deltaT 0.2" "endTime 3.6"
+do
+    foamDictionary -entry ${entry% *} -set ${entry#* } \
+        "$work/serial/system/controlDict" > /dev/null || exit 1
+done
+foamDictionary -entry gravity -set "(0.32 0 0)" \
+    "$work/serial/constant/particleProperties" > /dev/null || exit 1
+
+mkdir -p "$work/distributed"
+cp -r "$work/serial"/{0,constant,system} "$work/distributed"/
+foamDictionary -entry coupling.parallelParticleSolve -add distributed \
+    "$work/distributed/constant/particleProperties" > /dev/null || exit 1
+(
+    cd "$work/serial" || exit 1
+    runLogged blockMesh && runLogged fdmSuspensionFoam
+) || exit 1
+(
+    cd "$work/distributed" || exit 1
+    runLogged blockMesh && runLogged decomposePar \
+        && runParallel2 fdmSuspensionFoam
+) || exit 1
+grep -q "particle system solved by subdomain" \
+    "$work/distributed/log.fdmSuspensionFoam.parallel" \
+    || { echo "FAILED: the distributed run does not say it solves by subdomain"; exit 1; }
+
+"$FDM_PYTHON" "$caseTemplates/checkProcessorCrossing.py" "$work"
