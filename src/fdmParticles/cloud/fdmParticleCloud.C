@@ -301,7 +301,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
         dict_, mesh_, groups_, state_, rhoFluid_, rhoFluid_*nu_
     );
 
-    system_ = fdm::particleVelocitySystem(size());
+    system_ = fdm::particleVelocitySystem(distributedSolve_ ? 0 : size());
     state_.resizeVelocities();
     hydro_ = fdm::particleLoads(size());
     dipoleTrace_.setSize(size(), Zero);

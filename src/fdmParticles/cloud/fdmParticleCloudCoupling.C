@@ -12,7 +12,7 @@ Description
 #include "ranksHoldingPoints.H"
 #include "adamsBashforth.H"
 #include "clockTime.H"
-#include "sumOverRanks.H"
+#include "sumToOwners.H"
 #include "leesEdwardsShear.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -33,10 +33,6 @@ void Foam::fdmParticleCloud::buildStencils()
     );
     lambdaPrev_.setSize(stencils_.supportCells().size());
 
-    // Pseudo-mass moments (eq 2.53), summed over ranks
-    moments_ = stencils_.moments(mesh_.V());
-    fdm::sumOverRanks(moments_);
-
     // The rank that solves each particle's rows: its centre's (the master
     // for a centre in no rank's cells)
     if (distributedSolve_)
@@ -49,7 +45,12 @@ void Foam::fdmParticleCloud::buildStencils()
         {
             owner_[p] = owner_[p] < 0 ? Pstream::masterNo() : owner_[p];
         }
+        ownedRows_.setOwners(owner_);
     }
+
+    // Pseudo-mass moments (eq 2.53), summed over ranks
+    moments_ = stencils_.moments(mesh_.V());
+    fdm::sumToOwners(moments_, owner_, stencils_);
 
     timings_.indicators += clock.elapsedTime();
 }
@@ -61,21 +62,31 @@ Foam::scalar Foam::fdmParticleCloud::assembleSystem
 )
 {
     // Particle system (eqs 2.43-2.44, smoothed form 2.53), per unit fluid
-    // density
+    // density: whole, or the rows of this rank's particles
     system_.clear();
+    ownedRows_.clear();
+    fdm::particleSystemSink& system =
+        distributedSolve_
+      ? static_cast<fdm::particleSystemSink&>(ownedRows_)
+      : system_;
     // The contacts' explicit loads, linearised about the latest velocities
     const fdm::particleLoads& contact = contacts_->loads();
     scalar flowLoads2 = 0;
     forAll(state_.position, p)
     {
+        // Solved by subdomain, this rank holds the sums of its own only
+        if (distributedSolve_ && owner_[p] != Pstream::myProcNo())
+        {
+            continue;
+        }
         const particleGroup& g = groups_[state_.group[p]];
         const fdm::couplingStencils::supportIntegrals& s = sums[p];
 
-        system_.addMass(p, moments_[p], 1/alphaLambda_);
+        system.addMass(p, moments_[p], 1/alphaLambda_);
         const vector force = s.fu/alphaLambda_ - s.fl + bodyForce(p);
         const vector torque = s.tu/alphaLambda_ - s.tl + g.torque()/rhoFluid_;
         flowLoads2 += magSqr(force) + magSqr(torque);
-        system_.addRhs
+        system.addRhs
         (
             p,
             force + contact.force[p]/rhoFluid_,
@@ -85,11 +96,11 @@ Foam::scalar Foam::fdmParticleCloud::assembleSystem
         {
             if (g.translationPrescribed())
             {
-                system_.prescribe(p, d, g.translation()[d]);
+                system.prescribe(p, d, g.translation()[d]);
             }
             if (g.rotationPrescribed())
             {
-                system_.prescribe(p, 3 + d, g.rotation()[d]);
+                system.prescribe(p, 3 + d, g.rotation()[d]);
             }
         }
     }
@@ -98,11 +109,15 @@ Foam::scalar Foam::fdmParticleCloud::assembleSystem
     // of eq 2.43, per unit fluid density
     fdm::couplingStencils::addOverlapBlocks
     (
-        overlapPairs_, overlapBlocks_, system_
+        overlapPairs_, overlapBlocks_, system
     );
     for (const pairInteraction& pi : pairInteractions_)
     {
-        pi.addTo(system_, fdm::fluidProperties{rhoFluid_, nu_});
+        pi.addTo(system, fdm::fluidProperties{rhoFluid_, nu_});
+    }
+    if (distributedSolve_)
+    {
+        reduce(flowLoads2, sumOp<scalar>());
     }
     return Foam::sqrt(flowLoads2);
 }
@@ -253,7 +268,7 @@ Foam::scalar Foam::fdmParticleCloud::correct
     (
         stencils_.integrals(V, u, l)
     );
-    fdm::sumOverRanks(sums);
+    fdm::sumToOwners(sums, owner_, stencils_);
     timings_.integrals += clock.timeIncrement();
 
     // From the second outer iteration on, the contacts linearised again
@@ -268,8 +283,8 @@ Foam::scalar Foam::fdmParticleCloud::correct
         distributedSolve_
       ? ownedSolve_.solve
         (
-            system_, owner_, solveTolerance_, 1000, state_.U, state_.Omega,
-            residualScale
+            ownedRows_.entries(), owner_, solveTolerance_, 1000, state_.U,
+            state_.Omega, residualScale
         )
       : system_.solve
         (

@@ -11,7 +11,7 @@
 
 Foam::labelList Foam::fdm::ownedParticleSolve::localNumbers
 (
-    const particleVelocitySystem& whole,
+    const particleSystemEntries& rows,
     const labelUList& owner,
     DynamicList<label>& ghostOwner,
     DynamicList<label>& ghostIndex
@@ -26,11 +26,9 @@ Foam::labelList Foam::fdm::ownedParticleSolve::localNumbers
         ownerIndex[p] = counts[owner[p]]++;
         local[p] = owner[p] == me ? ownerIndex[p] : -1;
     }
-    const labelUList& rows = whole.entryRows();
-    const labelUList& cols = whole.entryCols();
-    forAll(rows, e)
+    forAll(rows.rows, e)
     {
-        const label p = rows[e]/nDof, q = cols[e]/nDof;
+        const label p = rows.rows[e]/nDof, q = rows.cols[e]/nDof;
         if (owner[p] == me && local[q] < 0)
         {
             local[q] = counts[me] + ghostOwner.size();
@@ -47,7 +45,7 @@ Foam::labelList Foam::fdm::ownedParticleSolve::localNumbers
 Foam::fdm::particleVelocitySystem::solveInfo
 Foam::fdm::ownedParticleSolve::solve
 (
-    const particleVelocitySystem& whole,
+    const particleSystemEntries& rows,
     const labelUList& owner,
     const scalar tolerance,
     const label maxIterations,
@@ -57,7 +55,7 @@ Foam::fdm::ownedParticleSolve::solve
 )
 {
     DynamicList<label> ghostOwner, ghostIndex;
-    const labelList local(localNumbers(whole, owner, ghostOwner, ghostIndex));
+    const labelList local(localNumbers(rows, owner, ghostOwner, ghostIndex));
 
     // Made anew on every rank when the owners or any rank's ghosts changed
     // (the constructor exchanges with all ranks)
@@ -78,7 +76,7 @@ Foam::fdm::ownedParticleSolve::solve
         local_ = local;
     }
     system_->clear();
-    whole.replay(*system_, local);
+    rows.replay(*system_, local);
 
     const label nLocal = system_->nOwned() + system_->nGhosts();
     List<vector> u(nLocal), w(nLocal);

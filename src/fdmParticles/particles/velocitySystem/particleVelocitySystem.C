@@ -297,40 +297,7 @@ void Foam::fdm::particleVelocitySystem::replay
     const labelUList& local
 ) const
 {
-    const auto renumbered = [&](const label k)
-    {
-        const label p = local[k/nDof];
-        return p < 0 ? -1 : nDof*p + k % nDof;
-    };
-    forAll(entries_.values, e)
-    {
-        const label r = renumbered(entries_.rows[e]), c = renumbered(entries_.cols[e]);
-        if (r >= 0 && c >= 0)
-        {
-            sink.addEntry(r, c, entries_.values[e]);
-        }
-    }
-    forAll(local, p)
-    {
-        if (local[p] < 0)
-        {
-            continue;
-        }
-        const label o = nDof*p;
-        sink.addRhs
-        (
-            local[p],
-            vector(entries_.rhs[o], entries_.rhs[o + 1], entries_.rhs[o + 2]),
-            vector(entries_.rhs[o + 3], entries_.rhs[o + 4], entries_.rhs[o + 5])
-        );
-        for (direction d = 0; d < nDof; ++d)
-        {
-            if (entries_.prescribed[o + d])
-            {
-                sink.prescribe(local[p], d, entries_.prescribedValue[o + d]);
-            }
-        }
-    }
+    entries_.replay(sink, local);
 }
 
 

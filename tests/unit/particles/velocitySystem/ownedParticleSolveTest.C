@@ -4,6 +4,8 @@
 // are tested by tests/cases/subGridSqueeze.sh (parallelParticleSolve distributed)
 
 #include "ownedParticleSolve.H"
+#include "ownedRowsSink.H"
+#include "particleVelocitySystem.H"
 #include "particleSystemFixtures.H"
 
 #include <gtest/gtest.h>
@@ -20,9 +22,14 @@ TEST(ownedParticleSolve, oneOwnerSolvesAsTheWholeSystem)
     List<vector> U1(nParticles, Zero), W1(nParticles, Zero);
     List<vector> U2(U1), W2(W1);
     const auto a = whole.solve(1e-12, 200, U1, W1);
+    // Assembled as the cloud does: into the rows this rank owns
+    const labelList owner(nParticles, 0);
+    fdm::ownedRowsSink rows(nParticles);
+    rows.setOwners(owner);
+    assemble(rows);
+    rows.prescribe(3, 4, 0.5);
     fdm::ownedParticleSolve owned;
-    const auto b = owned.solve(whole, labelList(nParticles, 0), 1e-12, 200,
-                               U2, W2);
+    const auto b = owned.solve(rows.entries(), owner, 1e-12, 200, U2, W2);
     EXPECT_TRUE(a.converged);
     EXPECT_TRUE(b.converged);
     EXPECT_EQ(owned.nGhosts(), 0);
@@ -34,7 +41,7 @@ TEST(ownedParticleSolve, oneOwnerSolvesAsTheWholeSystem)
     }
 
     // Solved again from its solution: nothing left to do
-    const auto again = owned.solve(whole, labelList(nParticles, 0), 1e-12,
-                                   200, U2, W2);
+    const auto again =
+        owned.solve(whole.entries(), owner, 1e-12, 200, U2, W2);
     EXPECT_EQ(again.iterations, 0);
 }

@@ -1,0 +1,67 @@
+// Unit tests for Foam::fdm::sumToOwners (issue 38) on one rank: the owner
+// keeps its sums, the records of particles another rank owns are zeroed,
+// and an empty owner list leaves every record (sumOverRanks); the ranks
+// together are tested by the distributed case tests (processorCrossing,
+// subGridSqueeze, adhesivePair)
+
+#include "sumToOwners.H"
+#include "rigidBodyMoments.H"
+
+#include <gtest/gtest.h>
+
+using namespace Foam;
+
+namespace
+{
+
+struct touchesAll
+{
+    bool touches(const label) const { return true; }
+};
+
+List<fdm::rigidBodyMoments> threeMoments()
+{
+    List<fdm::rigidBodyMoments> m(3);
+    forAll(m, p)
+    {
+        m[p].add(1 + p, vector(0.1*p, -0.2, 0.3), 1);
+    }
+    return m;
+}
+
+} // namespace
+
+
+TEST(sumToOwners, keepsOwnSumsAndZeroesOthers)
+{
+    List<fdm::rigidBodyMoments> m(threeMoments());
+    const List<fdm::rigidBodyMoments> before(m);
+    fdm::sumToOwners(m, labelList({0, 1, 0}), touchesAll());
+    for (const label p : {0, 2})
+    {
+        for (direction r = 0; r < 6; ++r)
+        {
+            for (direction c = 0; c < 6; ++c)
+            {
+                EXPECT_EQ(m[p].entry(r, c), before[p].entry(r, c));
+            }
+        }
+    }
+    scalar other = 0;
+    m[1].forEachScalar([&](scalar& s) { other += mag(s); });
+    EXPECT_EQ(other, 0);
+    EXPECT_NE(before[1].entry(0, 0), 0);
+}
+
+
+TEST(sumToOwners, withoutOwnersEveryRankHoldsEverySum)
+{
+    List<fdm::rigidBodyMoments> m(threeMoments());
+    const List<fdm::rigidBodyMoments> before(m);
+    fdm::sumToOwners(m, labelList(), touchesAll());
+    forAll(m, p)
+    {
+        EXPECT_EQ(m[p].entry(1, 1), before[p].entry(1, 1)) << p;
+        EXPECT_EQ(m[p].entry(3, 4), before[p].entry(3, 4)) << p;
+    }
+}
