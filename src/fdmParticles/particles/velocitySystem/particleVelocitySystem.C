@@ -291,16 +291,6 @@ Foam::fdm::particleVelocitySystem::solve
 }
 
 
-void Foam::fdm::particleVelocitySystem::replay
-(
-    particleSystemSink& sink,
-    const labelUList& local
-) const
-{
-    entries_.replay(sink, local);
-}
-
-
 void Foam::fdm::particleVelocitySystem::multiply
 (
     const List<vector>& U,

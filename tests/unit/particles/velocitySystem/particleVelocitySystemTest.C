@@ -3,7 +3,6 @@
 
 #include "particleVelocitySystem.H"
 #include "rigidBodyMoments.H"
-#include "particleSystemFixtures.H"
 
 #include <gtest/gtest.h>
 
@@ -267,37 +266,4 @@ TEST(particleVelocitySystem, aStiffLoadDoesNotHideTheChangeOfTheOthers)
     EXPECT_GT(info.iterations, 0);
     EXPECT_LT(mag(U[1] - Uref[1]), 1e-5);
     EXPECT_LT(mag(U[0] - Uref[0]), 1e-5);
-}
-
-
-TEST(particleVelocitySystem, replaysItsBlocksRenumbered)
-{
-    // Replayed in reverse order into another system, the same system: its
-    // solution reversed; a particle left out takes its couplings with it
-    using namespace particleSystemFixtures;
-    fdm::particleVelocitySystem whole(nParticles), reversed(nParticles);
-    assemble(whole);
-    whole.prescribe(1, 2, -0.75);
-    whole.replay(reversed, labelList({4, 3, 2, 1, 0}));
-
-    List<vector> U1(nParticles, Zero), W1(nParticles, Zero);
-    List<vector> U2(U1), W2(W1);
-    whole.solve(1e-12, 200, U1, W1);
-    reversed.solve(1e-12, 200, U2, W2);
-    EXPECT_NEAR(U2[3].z(), -0.75, 1e-12);
-    for (label i = 0; i < nParticles; ++i)
-    {
-        EXPECT_LT(mag(U1[i] - U2[4 - i]), 1e-9*mag(U1[i]) + 1e-12) << i;
-        EXPECT_LT(mag(W1[i] - W2[4 - i]), 1e-9*mag(W1[i]) + 1e-12) << i;
-    }
-
-    // The last particle left out: its row and its couplings are not added
-    fdm::particleVelocitySystem four(nParticles - 1);
-    whole.replay(four, labelList({0, 1, 2, 3, -1}));
-    for (label e = 0; e < four.entryRows().size(); ++e)
-    {
-        EXPECT_LT(four.entryRows()[e], 24);
-        EXPECT_LT(four.entryCols()[e], 24);
-    }
-    EXPECT_LT(four.entryRows().size(), whole.entryRows().size());
 }
