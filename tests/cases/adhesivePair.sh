@@ -53,8 +53,6 @@ twoRanks="$work/load0.9.2ranks"
 mkdir -p "$twoRanks"
 cp -r "$work/load0.9"/{0,constant,system} "$twoRanks"/
 cp "$caseTemplates/adhesivePair/system/decomposeParDict" "$twoRanks/system/"
-foamDictionary -entry coupling.parallelParticleSolve -add distributed \
-    "$twoRanks/constant/particleProperties" > /dev/null || exit 1
 for entry in "endTime 1" "writeInterval 20"
 do
     foamDictionary -entry ${entry% *} -set ${entry#* } \
@@ -68,9 +66,5 @@ do
         runLogged blockMesh && runLogged fdmSuspensionFoam
     ) || exit 1
 done
-(
-    cd "$twoRanks" || exit 1
-    runLogged blockMesh && runLogged decomposePar \
-        && runParallel2 fdmSuspensionFoam
-) || exit 1
+runBySubdomain "$twoRanks" || exit 1
 "$FDM_PYTHON" "$caseTemplates/checkAdhesivePair.py" "$work"

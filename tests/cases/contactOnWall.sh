@@ -53,10 +53,7 @@ expectStop "$work/noState" fdmSuspensionFoam 'particleState" is missing' \
 ) || { echo "FAILED: incomplete time 1 not set aside"; exit 1; }
 echo "   noStateLatest: time 1 set aside as 1.incomplete, started at 0"
 cloneCase contactOnWall "$work/parallel"
-(
-    cd "$work/parallel" || exit 1
-    runLogged blockMesh && runLogged decomposePar && runParallel2 fdmSuspensionFoam
-) || exit 1
+runDecomposed "$work/parallel" || exit 1
 
 # ParaView's .foam reader (vtkPOpenFOAMReader) on the serial and the
 # decomposed run: the particles with their fields at every written time

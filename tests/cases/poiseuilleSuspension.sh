@@ -24,17 +24,13 @@ cp -r "$tutorial"/{0,constant,system} "$work"/
     fdmPackParticles --box 10 10 8 --walls y --phi 0.3 --seed 1 \
         -o constant/particleList > log.fdmPackParticles || exit 1
     mkdir distributed && cp -r 0 constant system distributed/ || exit 1
-    foamDictionary -entry coupling.parallelParticleSolve -add distributed \
-        distributed/constant/particleProperties > /dev/null || exit 1
     foamDictionary -entry endTime -set 0.025 distributed/system/controlDict \
         > /dev/null || exit 1
     runLogged blockMesh || exit 1
     runLogged decomposePar || exit 1
     runLogged mpirun -np 2 fdmSuspensionFoam -parallel || exit 1
     runLogged reconstructPar -fields '(U p)' || exit 1
-    cd distributed || exit 1
-    runLogged blockMesh && runLogged decomposePar \
-        && runParallel2 fdmSuspensionFoam
 ) || exit 1
+runBySubdomain "$work/distributed" || exit 1
 
 "$FDM_PYTHON" "$caseTemplates/checkPoiseuilleSuspension.py" "$work"

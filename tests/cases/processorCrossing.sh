@@ -29,19 +29,10 @@ foamDictionary -entry gravity -set "(0.32 0 0)" \
 
 mkdir -p "$work/distributed"
 cp -r "$work/serial"/{0,constant,system} "$work/distributed"/
-foamDictionary -entry coupling.parallelParticleSolve -add distributed \
-    "$work/distributed/constant/particleProperties" > /dev/null || exit 1
 (
     cd "$work/serial" || exit 1
     runLogged blockMesh && runLogged fdmSuspensionFoam
 ) || exit 1
-(
-    cd "$work/distributed" || exit 1
-    runLogged blockMesh && runLogged decomposePar \
-        && runParallel2 fdmSuspensionFoam
-) || exit 1
-grep -q "particle system solved by subdomain" \
-    "$work/distributed/log.fdmSuspensionFoam.parallel" \
-    || { echo "FAILED: the distributed run does not say it solves by subdomain"; exit 1; }
+runBySubdomain "$work/distributed" || exit 1
 
 "$FDM_PYTHON" "$caseTemplates/checkProcessorCrossing.py" "$work"

@@ -26,22 +26,9 @@ do
 done
 
 # With the sub-grid model on 2 ranks, cut through the gap
-for run in parallel distributed
-do
-    cloneCase subGridSqueeze "$work/$run"
-    if [ "$run" = distributed ]
-    then
-        foamDictionary -entry coupling.parallelParticleSolve -set distributed \
-            "$work/$run/constant/particleProperties" > /dev/null || exit 1
-    fi
-    (
-        cd "$work/$run" || exit 1
-        runLogged blockMesh && runLogged decomposePar \
-            && runParallel2 fdmSuspensionFoam
-    ) || exit 1
-done
-grep -q "particle system solved by subdomain" \
-    "$work/distributed/log.fdmSuspensionFoam.parallel" \
-    || { echo "FAILED: the distributed run does not say it solves by subdomain"; exit 1; }
+cloneCase subGridSqueeze "$work/parallel"
+runDecomposed "$work/parallel" || exit 1
+cloneCase subGridSqueeze "$work/distributed"
+runBySubdomain "$work/distributed" || exit 1
 
 "$FDM_PYTHON" "$caseTemplates/checkSubGridSqueeze.py" "$work"
