@@ -12,13 +12,18 @@
 # contact) the pair stays bonded, the contact holding the load at the
 # overlap where F_el - F_adh balances it, while the flow turns it at
 # -gammaDot/2; above it the pair separates.
-# The bonded pair (0.9 F_adh) also runs on 2 ranks cut at z = 3 through the
-# contact, to time 1, the particle system solved by subdomain
-# (parallelParticleSolve distributed: each rank solves one sphere's rows,
-# the other its ghost): its contact, sub-grid and FDM loads are compared
-# with the serial run's.  Both solve the coupling to a lambda residual of
-# 1e-5 (1e-3 for the separating pair), so that they stop close to the same
-# state.
+# The tumbling doublet runs on 2 ranks, the particle system solved by
+# subdomain (parallelParticleSolve distributed): the bonded pair without the
+# pull and with ten times the adhesion, its line of centres at 135 degrees
+# in the shear plane, centred at (4.35, 3, 2) in a box of 8 x 6 x 4 cut at
+# x = 4, to time 2.  The flow turns it by about 80 degrees: sphere 0 crosses
+# to rank 1 first, then both are on rank 1 (rank 0 holds no particle of the
+# pair, nor its contact), then sphere 1 crosses to rank 0 with a tangential
+# contact force about a third of the normal one, which rank 0 must take
+# over with the contact's accumulated slip.  Its positions, velocities and
+# FDM, sub-grid and contact loads are compared with the serial run's.  Both
+# solve the coupling to a lambda residual of 1e-4 (1e-5 for load0.9, 1e-3
+# for load1.1), so that they stop close to the same state.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir adhesivePair)
@@ -49,22 +54,29 @@ do
 done
 foamDictionary -entry coupling.lambdaTolerance -set 1e-5 \
     "$work/load0.9/constant/particleProperties" > /dev/null || exit 1
-twoRanks="$work/load0.9.2ranks"
-mkdir -p "$twoRanks"
-cp -r "$work/load0.9"/{0,constant,system} "$twoRanks"/
-cp "$caseTemplates/adhesivePair/system/decomposeParDict" "$twoRanks/system/"
-for entry in "endTime 1" "writeInterval 20"
-do
-    foamDictionary -entry ${entry% *} -set ${entry#* } \
-        "$twoRanks/system/controlDict" > /dev/null || exit 1
-done
 
-for load in 0.9 1.1
+tumbling="$work/tumbling"
+cp -r "$work/load0.9" "$tumbling"
+cp "$caseTemplates/adhesivePair/tumbling/system/"* "$tumbling/system/"
+(
+    cd "$tumbling" || exit 1
+    for entry in "contact.adhesionForce 188.5" "groups.left.force (0 0 0)" \
+        "groups.right.force (0 0 0)" "coupling.lambdaTolerance 1e-4" \
+        "particles ((left (3.6415 3.7085 2) 1) (right (5.0585 2.2915 2) 1))"
+    do
+        foamDictionary -entry "${entry%% *}" -set "${entry#* }" \
+            constant/particleProperties > /dev/null || exit 1
+    done
+) || exit 1
+mkdir -p "$tumbling.2ranks"
+cp -r "$tumbling"/{0,constant,system} "$tumbling.2ranks"/
+
+for run in load0.9 load1.1 tumbling
 do
     (
-        cd "$work/load$load" || exit 1
+        cd "$work/$run" || exit 1
         runLogged blockMesh && runLogged fdmSuspensionFoam
     ) || exit 1
 done
-runBySubdomain "$twoRanks" || exit 1
+runBySubdomain "$tumbling.2ranks" || exit 1
 "$FDM_PYTHON" "$caseTemplates/checkAdhesivePair.py" "$work"

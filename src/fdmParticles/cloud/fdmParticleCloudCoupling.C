@@ -365,20 +365,7 @@ void Foam::fdmParticleCloud::finishSolve
         dipoleTrace_[n] = tr(D);
     }
 
-    // Hydrodynamic totals: FDM + sub-grid (eqs 2.9, 2.68); contact loads:
-    // the explicit part and the implicit stiffness' share at the solved
-    // velocities
-    contact_ = contacts_->loads();
-    for (const pairInteraction& pi : pairInteractions_)
-    {
-        const bool hydro =
-            pi.share() == pairInteraction::loadShare::hydrodynamic;
-        pi.addSolvedLoads
-        (
-            state_.U, state_.Omega, fdm::fluidProperties{rhoFluid_, nu_},
-            hydro ? hydro_ : contact_, dipoleTrace_
-        );
-    }
+    addPairLoads();
 
     firstSolveDone_ = true;
 }

@@ -96,7 +96,13 @@ void Foam::fdmParticleCloud::writeState() const
     label sync = 0;
     reduce(sync, sumOp<label>());
 
-    if (empty() || !Pstream::master())
+    if (empty())
+    {
+        return;
+    }
+    // Each rank's contacts when solved by subdomain, on the master
+    const fdm::pairHistory<vector> contactHistory(contacts_->wholeHistory());
+    if (!Pstream::master())
     {
         return;
     }
@@ -123,7 +129,7 @@ void Foam::fdmParticleCloud::writeState() const
             os.writeEntry("torque", hydro_.torque);
             os.writeEntry("stresslet", hydro_.stresslet);
             os.writeEntry("dipoleTrace", dipoleTrace_);
-            contacts_->writeState(os, contact_);
+            contacts_->writeState(os, contact_, contactHistory);
         }
     );
 }
@@ -200,11 +206,12 @@ void Foam::fdmParticleCloud::writeLagrangian() const
 
 void Foam::fdmParticleCloud::writeVTK()
 {
-    if (empty() || !Pstream::master() || !output_->vtkDue())
+    if (empty() || !output_->vtkDue())
     {
         return;
     }
     checkFinite();
+    // Each rank's contacts when solved by subdomain, on the master
     output_->writeVTK
     (
         outputView(),

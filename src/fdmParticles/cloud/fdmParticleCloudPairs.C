@@ -5,13 +5,14 @@
 Description
     The cloud's pairs: one neighbour search per step at the largest reach
     that any user of it needs, the pair interactions on it (sub-grid
-    lubrication, rough contacts: pairInteraction), the pairs whose supports
-    overlap, and the smallest gap of the progress line.
+    lubrication, rough contacts: pairInteraction) and their loads at the
+    solved velocities, the pairs whose supports overlap, and the smallest
+    gap of the progress line.
 
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
-#include "sumOverRanks.H"
+#include "sumToOwners.H"
 #include "pairSearch.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
@@ -23,6 +24,34 @@ namespace
 Foam::scalar smallestGapReach(const Foam::scalarField& radii)
 {
     return 2*Foam::min(radii);
+}
+
+
+//- The pairs with a particle this rank owns (owner; all when empty)
+Foam::DynamicList<Foam::labelPair> pairsHeld
+(
+    const Foam::UList<Foam::labelPair>& near,
+    const Foam::labelUList& owner
+)
+{
+    using namespace Foam;
+    if (owner.empty())
+    {
+        return DynamicList<labelPair>(near);
+    }
+    DynamicList<labelPair> held;
+    for (const labelPair& pq : near)
+    {
+        if
+        (
+            owner[pq.first()] == Pstream::myProcNo()
+         || owner[pq.second()] == Pstream::myProcNo()
+        )
+        {
+            held.append(pq);
+        }
+    }
+    return held;
 }
 
 } // End anonymous namespace
@@ -78,9 +107,13 @@ void Foam::fdmParticleCloud::updatePairs()
             positionScheme_, historyDeltaT_, mesh_.time().deltaTValue()
         )
     );
+    // Solved by subdomain, a rank computes the pairs of its own particles
+    // (owner_; empty when every rank computes all)
+    const DynamicList<labelPair> held(pairsHeld(near_, owner_));
     const fdm::pairStepInput in
     {
-        state_.position, state_.radius, box_, near_, step, state_.Uold, 0
+        state_.position, state_.radius, box_, held, step, state_.Uold, 0,
+        owner_
     };
     for (pairInteraction& pi : pairInteractions_)
     {
@@ -89,6 +122,53 @@ void Foam::fdmParticleCloud::updatePairs()
         {
             pi.report();
         }
+    }
+}
+
+
+void Foam::fdmParticleCloud::addPairLoads()
+{
+    // Hydrodynamic totals: FDM + sub-grid (eqs 2.9, 2.68); contact loads:
+    // the explicit part and the implicit stiffness' share at the solved
+    // velocities
+    contact_ = contacts_->loads();
+    const fdm::fluidProperties fluid{rhoFluid_, nu_};
+    const auto addTo = [&](fdm::particleLoads& hydro, List<scalar>& trace)
+    {
+        for (const pairInteraction& pi : pairInteractions_)
+        {
+            const bool h =
+                pi.share() == pairInteraction::loadShare::hydrodynamic;
+            pi.addSolvedLoads
+            (
+                state_.U, state_.Omega, fluid, h ? hydro : contact_, trace
+            );
+        }
+    };
+    if (!distributedSolve_)
+    {
+        addTo(hydro_, dipoleTrace_);
+        return;
+    }
+    // Solved by subdomain, a rank holds the pair loads of its own
+    // particles whole (and shares of its partners'): each particle's from
+    // its owner
+    fdm::particleLoads pairs(size());
+    List<scalar> trace(size(), Zero);
+    addTo(pairs, trace);
+    for (fdm::particleLoads* loads : {&pairs, &contact_})
+    {
+        fdm::spreadFromOwners(loads->force, owner_);
+        fdm::spreadFromOwners(loads->torque, owner_);
+        fdm::spreadFromOwners(loads->stresslet, owner_);
+    }
+    fdm::spreadFromOwners(trace, owner_);
+    forAll(pairs.force, p)
+    {
+        hydro_.force[p] += pairs.force[p];
+        hydro_.torque[p] += pairs.torque[p];
+        hydro_.stresslet[p] += pairs.stresslet[p];
+        dipoleTrace_[p] += trace[p];
     }
 }
 
@@ -106,6 +186,7 @@ void Foam::fdmParticleCloud::relinearisePairs()
 
 Foam::label Foam::fdmParticleCloud::nContacts() const
 {
+    // Over all ranks (each rank counts its own when solved by subdomain)
     return contacts_->nContacts();
 }
 

@@ -53,7 +53,8 @@ Foam::particleCloudOutput::particleCloudOutput
 :
     mesh_(mesh),
     timeSeriesInterval_(1),
-    vtkInterval_(0)
+    vtkInterval_(0),
+    vtkStarted_(false)
 {
     fdm::checkKeywords
     (
@@ -87,7 +88,7 @@ bool Foam::particleCloudOutput::timeSeriesDue() const
 
 bool Foam::particleCloudOutput::recordDue() const
 {
-    // The same on every rank (vtkDue is not: only the master writes VTK)
+    // The same on every rank
     const Time& runTime = mesh_.time();
     return
         timeSeriesDue()
@@ -162,7 +163,7 @@ bool Foam::particleCloudOutput::vtkDue() const
 {
     const Time& runTime = mesh_.time();
     return
-        !vtk_
+        !vtkStarted_
      || fdm::particleVTKWriter::due
         (
             vtkInterval_, runTime.timeIndex(), runTime.writeTime()
@@ -176,6 +177,11 @@ void Foam::particleCloudOutput::writeVTK
     const fdm::contactNetwork& contacts
 )
 {
+    vtkStarted_ = true;
+    if (!Pstream::master())
+    {
+        return;
+    }
     const Time& runTime = mesh_.time();
     if (!vtk_)
     {

@@ -6,25 +6,29 @@
 #include "particleContacts.H"
 #include "pairSearch.H"
 #include "contactLoads.H"
+#include "pairsOverRanks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class Action>
 void Foam::particleContacts::forEachContact
 (
-    const pointField& positions,
-    const scalarField& radii,
-    const fdm::periodicBox& box,
-    const UList<labelPair>& near,
+    const fdm::pairStepInput& in,
     const Action& action
 ) const
 {
+    const pointField& positions = in.positions;
+    const scalarField& radii = in.radii;
+    const fdm::periodicBox& box = in.box;
     // action(key, geometry, arm of i, arm of j, wall or -1, velocity of
     // the image of j relative to j): the arm is the distance from the
     // centre to the contact point along n, the weight a_i r/(a_i + a_j) of
     // eqs 2.64 and 2.69
     DynamicList<labelPair> touching;
-    fdm::selectNearPairs(box, positions, radii, pairReach(), near, touching);
+    fdm::selectNearPairs
+    (
+        box, positions, radii, pairReach(), in.near, touching
+    );
     for (const labelPair& pq : touching)
     {
         const label i = pq.first(), j = pq.second();
@@ -47,6 +51,10 @@ void Foam::particleContacts::forEachContact
         const planeWalls::wall& wall = walls_.walls()[w];
         forAll(positions, i)
         {
+            if (!in.holds(i))
+            {
+                continue;
+            }
             const fdm::contactGeometry g
             {
                 wall.normal,
@@ -97,10 +105,34 @@ void Foam::particleContacts::linearise(const UList<scalar>& gaps)
         );
         fdm::addContactLoads(f, g0.normal, e.armI, e.armJ, i, j, loads_);
         current.append(e.k, slip);
-        nSliding_ += f.sliding;
+        nSliding_ += f.sliding && e.counted;
     }
     current.sort();
     slip_ = std::move(current);
+}
+
+
+Foam::List<Foam::scalar> Foam::particleContacts::startGaps() const
+{
+    // Linearised at the start gap; a gap at the barrier's floor (within
+    // 1e-4 h_r of it, or below it: crossed in the last step) is taken a
+    // hundredth of h_r above the floor, where the barrier's stiffness is
+    // finite.  At the floor (x = 1e-6 in eq 2.57) k' dt is about 1e8 times
+    // a resistance of the lubrication's size, and the particle velocity
+    // solve of a dense suspension stopped converging (phi0 = 0.52, strain
+    // 0.754: 3 gaps below the floor, CG residual 1.7e4 after 1000
+    // iterations).  Gaps above that keep their own linearisation, so that
+    // a contact resting on the barrier rests at its balance.
+    const scalar hr = law_->roughness();
+    List<scalar> gaps(contacts_.size());
+    forAll(gaps, c)
+    {
+        const fdm::contactGeometry& g = contacts_[c].geometry;
+        gaps[c] = g.gap < g.floorGap + 1e-4*hr
+          ? g.floorGap + 1e-2*hr
+          : g.gap;
+    }
+    return gaps;
 }
 
 
@@ -126,7 +158,8 @@ Foam::particleContacts::particleContacts
     nWalls_(0),
     nSliding_(0),
     nBelowFloor_(0),
-    minGap_(GREAT)
+    minGap_(GREAT),
+    sharedCounts_(false)
 {
     law_->writeInfo(Info);
     Info<< "    contacts with " << walls_.size() << " plane wall(s)" << nl;
@@ -140,6 +173,9 @@ void Foam::particleContacts::update(const fdm::pairStepInput& in)
     const scalarField& radii = in.radii;
     const fdm::positionStep& step = in.step;
     step_ = step;
+    // The slip of the contacts of a particle that changed rank goes with it
+    fdm::shareWithOwners(slip_, in.owner);
+    sharedCounts_ = !in.owner.empty();
     relinearisations_ = 0;
     contacts_.clear();
     List<vector> wallVelocity(walls_.size());
@@ -155,7 +191,7 @@ void Foam::particleContacts::update(const fdm::pairStepInput& in)
 
     forEachContact
     (
-        in.positions, radii, in.box, in.near,
+        in,
         [&](const key& k, const fdm::contactGeometry& g, const scalar armI,
             const scalar armJ, const label wall, const vector& imageU)
         {
@@ -180,10 +216,14 @@ void Foam::particleContacts::update(const fdm::pairStepInput& in)
                     g.gap,
                     spring,
                     Zero,
-                    (g.gap + radii[i] + (wall < 0 ? radii[j] : 0))*g.normal
+                    (g.gap + radii[i] + (wall < 0 ? radii[j] : 0))*g.normal,
+                    in.holds(i)
                 }
             );
-            ++(wall < 0 ? nPairs_ : nWalls_);
+            if (in.holds(i))
+            {
+                ++(wall < 0 ? nPairs_ : nWalls_);
+            }
             nBelowFloor_ += g.gap < g.floorGap;
             if (g.gap < minGap_)
             {
@@ -193,27 +233,15 @@ void Foam::particleContacts::update(const fdm::pairStepInput& in)
             }
         }
     );
-    // Linearised at the start gap; a gap at the barrier's floor (within
-    // 1e-4 h_r of it, or below it: crossed in the last step) is taken a
-    // hundredth of h_r above the floor, where the barrier's stiffness is
-    // finite.  At the floor (x = 1e-6 in eq 2.57) k' dt is about 1e8 times
-    // a resistance of the lubrication's size, and the particle velocity
-    // solve of a dense suspension stopped converging (phi0 = 0.52, strain
-    // 0.754: 3 gaps below the floor, CG residual 1.7e4 after 1000
-    // iterations).  Gaps above that keep their own linearisation, so that
-    // a contact resting on the barrier rests at its balance.
-    const scalar hr = law_->roughness();
-    List<scalar> startGaps(contacts_.size());
-    forAll(startGaps, c)
-    {
-        const fdm::contactGeometry& g = contacts_[c].geometry;
-        startGaps[c] = g.gap < g.floorGap + 1e-4*hr
-          ? g.floorGap + 1e-2*hr
-          : g.gap;
-    }
-    linearise(startGaps);
+    linearise(startGaps());
 
     checkGaps(closest, closestAcrossShear);
+    nPairs_ = in.total(nPairs_);
+    nWalls_ = in.total(nWalls_);
+    if (sharedCounts_)
+    {
+        reduce(minGap_, minOp<scalar>());
+    }
 }
 
 
@@ -302,15 +330,30 @@ Foam::fdm::contactNetwork Foam::particleContacts::network
     const List<vector>& Omega
 ) const
 {
-    fdm::contactNetwork links;
+    DynamicList<labelPair> pairs;
+    DynamicList<vector> branches;
+    DynamicList<vector> forces;
     for (const contactEntry& e : contacts_)
+    {
+        if (e.counted)
+        {
+            pairs.append(e.k);
+            branches.append(e.branch);
+            forces.append(e.force + e.spring.force(U, Omega).force);
+        }
+    }
+    const List<labelPair> allPairs(fdm::gatherOnMaster(pairs));
+    const List<vector> allBranches(fdm::gatherOnMaster(branches));
+    const List<vector> allForces(fdm::gatherOnMaster(forces));
+    fdm::contactNetwork links;
+    forAll(allPairs, c)
     {
         links.append
         (
             fdm::contactLink::split
             (
-                e.k.first(), e.k.second(), e.branch,
-                e.force + e.spring.force(U, Omega).force
+                allPairs[c].first(), allPairs[c].second(), allBranches[c],
+                allForces[c]
             )
         );
     }

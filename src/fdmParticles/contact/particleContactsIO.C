@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleContacts.H"
+#include "pairsOverRanks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -57,8 +58,10 @@ void Foam::particleContacts::checkGaps
 
 void Foam::particleContacts::report() const
 {
+    const label nSliding =
+        sharedCounts_ ? returnReduce(nSliding_, sumOp<label>()) : nSliding_;
     Info<< "Contacts: " << nPairs_ << " pairs, " << nWalls_ << " with walls, "
-        << nSliding_ << " sliding";
+        << nSliding << " sliding";
     if (nContacts())
     {
         Info<< ", smallest gap " << minGap_;
@@ -67,10 +70,22 @@ void Foam::particleContacts::report() const
 }
 
 
-void Foam::particleContacts::writeSlip(Ostream& os) const
+Foam::fdm::pairHistory<Foam::vector>
+Foam::particleContacts::wholeHistory() const
 {
-    os.writeEntry("contactPairs", slip_.pairs());
-    os.writeEntry("contactSlip", slip_.states());
+    DynamicList<labelPair> pairs;
+    DynamicList<vector> slips;
+    for (const contactEntry& e : contacts_)
+    {
+        if (e.counted)
+        {
+            pairs.append(e.k);
+            slips.append(slip_[slip_.find(e.k)]);
+        }
+    }
+    fdm::pairHistory<vector> whole;
+    whole.reset(fdm::gatherOnMaster(pairs), fdm::gatherOnMaster(slips));
+    return whole;
 }
 
 
@@ -101,13 +116,15 @@ void Foam::particleContacts::readSlip(const dictionary& state)
 void Foam::particleContacts::writeState
 (
     Ostream& os,
-    const fdm::particleLoads& loads
+    const fdm::particleLoads& loads,
+    const fdm::pairHistory<vector>& slip
 ) const
 {
     os.writeEntry("contactForce", loads.force);
     os.writeEntry("contactTorque", loads.torque);
     os.writeEntry("contactStresslet", loads.stresslet);
-    writeSlip(os);
+    os.writeEntry("contactPairs", slip.pairs());
+    os.writeEntry("contactSlip", slip.states());
 }
 
 

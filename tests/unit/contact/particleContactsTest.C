@@ -4,7 +4,9 @@
 // beyond the roughness; the accumulated slip survives the restart state; a
 // sphere driven into another far harder than the barrier's force at the
 // start gap settles on the barrier without crossing its floor; a pair
-// found below the floor is pushed back above it by converged solves.
+// found below the floor is pushed back above it by converged solves; solved
+// by subdomain a rank holds the contacts of its own particles and counts
+// each once.
 
 #include "particleContacts.H"
 #include "particleVelocitySystem.H"
@@ -78,7 +80,7 @@ struct contactCase
         DynamicList<labelPair> near;
         const scalarField radii(2, 1.0);
         fdm::findNearPairs(box, x, radii, m.pairReach(), near);
-        m.update({x, radii, box, near, s, Uold, 0});
+        m.update({x, radii, box, near, s, Uold, 0, labelList()});
         List<vector> Omega(2, Zero);
         bool converged = true;
         for (label outer = 0; outer < 8; ++outer)
@@ -111,14 +113,19 @@ struct contactCase
         return converged;
     }
 
-    void update(contactModel& m, const pointField& x) const
+    //- owner: the rank of each particle (solved by subdomain), or empty
+    void update
+    (
+        contactModel& m, const pointField& x,
+        const labelList& owner = labelList()
+    ) const
     {
         const scalarField radii(x.size(), 1.0);
         DynamicList<labelPair> near;
         fdm::findNearPairs(box, x, radii, m.pairReach(), near);
         const fdm::positionStep euler(fdm::positionStep::euler(1e-3));
         const List<vector> Uold(x.size(), Zero);
-        m.update({x, radii, box, near, euler, Uold, 0});
+        m.update({x, radii, box, near, euler, Uold, 0, owner});
     }
 };
 
@@ -159,6 +166,39 @@ TEST(particleContacts, pairAndWallForcesAreEq257)
 }
 
 
+TEST(particleContacts, aRankHoldsItsParticlesContactsAndCountsThemOnce)
+{
+    // A pair (0, 1) and a wall gap of 2, all touching.  Solved by
+    // subdomain, this rank (0) holds the pairs with a particle it owns and
+    // the wall gaps of its own particles, and counts a pair on the owner of
+    // its first particle: the run's totals, restart history and contact
+    // network then take each contact once over the ranks
+    contactCase cc("particleContactsOwners");
+    const pointField x({point(3, 2, 5), point(5 + 0.5*hr, 2, 5),
+        point(7, 1 + 0.4*hr, 5)});
+    autoPtr<contactModel> m = cc.model(3);
+    cc.update(*m, x);
+    EXPECT_EQ(m->nContacts(), 2);
+    EXPECT_EQ(m->wholeHistory().size(), 2);
+
+    // Particle 1 here, 0 and 2 on rank 1: the pair held for 1's rows and
+    // loads, counted on rank 1; the wall gap not held
+    cc.update(*m, x, labelList({1, 0, 1}));
+    EXPECT_EQ(m->nContacts(), 0);
+    EXPECT_EQ(m->wholeHistory().size(), 0);
+    EXPECT_EQ(m->network(List<vector>(3), List<vector>(3)).size(), 0);
+    EXPECT_GT(m->loads().force[1].x(), 0);
+    EXPECT_EQ(m->loads().force[2], vector::zero);
+
+    // Particles 0 and 2 here: both contacts held and counted
+    cc.update(*m, x, labelList({0, 1, 0}));
+    EXPECT_EQ(m->nPairs(), 1);
+    EXPECT_EQ(m->nWallGaps(), 1);
+    EXPECT_EQ(m->wholeHistory().size(), 2);
+    EXPECT_EQ(m->network(List<vector>(3), List<vector>(3)).size(), 2);
+}
+
+
 TEST(particleContacts, slipSurvivesTheRestartState)
 {
     contactCase cc("particleContactsState");
@@ -173,7 +213,7 @@ TEST(particleContacts, slipSurvivesTheRestartState)
 
     OStringStream os;
     os.precision(17);
-    first->writeState(os, first->loads());
+    first->writeState(os, first->loads(), first->wholeHistory());
     IStringStream is(os.str());
     const dictionary state(is);
 
@@ -270,7 +310,7 @@ TEST(particleContacts, pairBelowTheFloorIsAsStiffAsAHundredthOfHrAboveIt)
         const scalarField radii(2, 1.0);
         const fdm::positionStep euler(fdm::positionStep::euler(dt));
         const List<vector> Uold(2, Zero);
-        m->update({x, radii, cc.box, near, euler, Uold, 0});
+        m->update({x, radii, cc.box, near, euler, Uold, 0, labelList()});
         fdm::particleVelocitySystem system(2);
         for (direction d = 0; d < 6; ++d)
         {

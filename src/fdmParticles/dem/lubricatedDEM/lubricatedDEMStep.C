@@ -34,7 +34,8 @@ void Foam::fdm::lubricatedDEM::addPairLoads(const scalar dt)
     const positionStep step(positionStep::euler(dt));
     pairs.update
     ({
-        position_, radius_, box_, near_, step, velocity_, shearRate_
+        position_, radius_, box_, near_, step, velocity_, shearRate_,
+        labelList()
     });
     pairs.advance(velocity_, spin_, dt);
     List<scalar> noDipoleTrace;

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "distributedParticleSystemOperators.H"
+#include "exchangeWithRanks.H"
 #include "PstreamBuffers.H"
 #include "UIPstream.H"
 #include "UOPstream.H"
@@ -44,28 +45,13 @@ Foam::fdm::distributedParticleSystem::distributedParticleSystem
     {
         receiveFrom_[r].transfer(ghosts[r]);
     }
-    if (!Pstream::parRun())
-    {
-        return;
-    }
-
     // Every rank hears from every other once (empty lists included), so
     // that each knows what it sends without knowing who asks
-    PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-    for (label r = 0; r < Pstream::nProcs(); ++r)
-    {
-        if (r != Pstream::myProcNo())
+    exchangeWithRanks
+    (
+        [&](const label r, Ostream& os) { os << labelList(requests[r]); },
+        [&](const label r, Istream& is)
         {
-            UOPstream os(r, buffers);
-            os << labelList(requests[r]);
-        }
-    }
-    buffers.finishedSends();
-    for (label r = 0; r < Pstream::nProcs(); ++r)
-    {
-        if (r != Pstream::myProcNo())
-        {
-            UIPstream is(r, buffers);
             is >> sendTo_[r];
             for (const label i : sendTo_[r])
             {
@@ -78,7 +64,7 @@ Foam::fdm::distributedParticleSystem::distributedParticleSystem
                 }
             }
         }
-    }
+    );
 }
 
 

@@ -218,7 +218,9 @@ Foam::frameInvariantSubGrid::frameInvariantSubGrid
     subGridModel(mesh),
     pairCutoff_(0),
     wallCutoff_(0),
-    aLarge_(radii.empty() ? 0 : max(radii))
+    aLarge_(radii.empty() ? 0 : max(radii)),
+    nPairs_(0),
+    nWallGaps_(0)
 {
     fdm::checkKeywords
     (
@@ -255,6 +257,7 @@ void Foam::frameInvariantSubGrid::update(const fdm::pairStepInput& in)
     const fdm::periodicBox& box = in.box;
     pairs_.clear();
     wallGaps_.clear();
+    nPairs_ = 0;
 
     // Pairs: xi = 2r/(a_p + a_q) - 2 below the largest cut-off, i.e. a
     // surface gap below pairCutoff (a_p + a_q)/2 <= pairCutoff a_max
@@ -282,12 +285,15 @@ void Foam::frameInvariantSubGrid::update(const fdm::pairStepInput& in)
                 table.pairFunctions(xi, radii[p]), r, rv/r
             )}
         );
+        nPairs_ += in.holds(pq.first());
     }
 
     if (walls_ && !walls_->empty())
     {
-        updateWallGaps(positions, radii);
+        updateWallGaps(in);
     }
+    nPairs_ = in.total(nPairs_);
+    nWallGaps_ = in.total(label(wallGaps_.size()));
 }
 
 
@@ -300,18 +306,18 @@ void Foam::frameInvariantSubGrid::report() const
 
 void Foam::frameInvariantSubGrid::updateWallGaps
 (
-    const pointField& positions,
-    const scalarField& radii
+    const fdm::pairStepInput& in
 )
 {
+    const scalarField& radii = in.radii;
     for (const planeWalls::wall& w : walls_->walls())
     {
         const vector Uw = walls_->velocity(w);
-        forAll(positions, p)
+        forAll(in.positions, p)
         {
-            const scalar h = w.distance(positions[p]);
+            const scalar h = w.distance(in.positions[p]);
             const scalar epsilon = h/radii[p] - 1;
-            if (epsilon > wallCutoff_)
+            if (epsilon > wallCutoff_ || !in.holds(p))
             {
                 continue;
             }

@@ -1,8 +1,8 @@
-// Unit tests for Foam::fdm::sumToOwners (issue 38) on one rank: the owner
-// keeps its sums, the records of particles another rank owns are zeroed,
-// and an empty owner list leaves every record (sumOverRanks); the ranks
-// together are tested by the distributed case tests (processorCrossing,
-// subGridSqueeze, adhesivePair)
+// Unit tests for Foam::fdm::sumToOwners and spreadFromOwners (issue 38) on
+// one rank: the owner keeps its sums (its entries), the records of
+// particles another rank owns are zeroed, and an empty owner list leaves
+// every record (sumOverRanks); the ranks together are tested by the
+// distributed case tests (processorCrossing, subGridSqueeze, adhesivePair)
 
 #include "sumToOwners.H"
 #include "rigidBodyMoments.H"
@@ -64,4 +64,14 @@ TEST(sumToOwners, withoutOwnersEveryRankHoldsEverySum)
         EXPECT_EQ(m[p].entry(1, 1), before[p].entry(1, 1)) << p;
         EXPECT_EQ(m[p].entry(3, 4), before[p].entry(3, 4)) << p;
     }
+}
+
+
+TEST(spreadFromOwners, keepsOwnEntriesAndZeroesOthers)
+{
+    List<vector> f({vector(1, 2, 3), vector(4, 5, 6), vector(7, 8, 9)});
+    fdm::spreadFromOwners(f, labelList({0, 1, 0}));
+    EXPECT_EQ(f[0], vector(1, 2, 3));
+    EXPECT_EQ(f[1], vector::zero);
+    EXPECT_EQ(f[2], vector(7, 8, 9));
 }

@@ -55,7 +55,7 @@ struct oneStep
     )
     {
         const fdm::positionStep euler(fdm::positionStep::euler(dt));
-        pi.update({x, radii, box20, near, euler, U, shearRate});
+        pi.update({x, radii, box20, near, euler, U, shearRate, labelList()});
         pi.advance(U, Omega, dt);
         loads = fdm::particleLoads(x.size());
         List<scalar> dipoleTrace;

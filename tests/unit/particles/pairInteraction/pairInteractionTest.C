@@ -69,7 +69,7 @@ struct pushedPair
         const List<vector> Uold(2, Zero);
         for (pairInteraction& pi : all)
         {
-            pi.update({x, radii, box, near, euler, Uold, 0});
+            pi.update({x, radii, box, near, euler, Uold, 0, labelList()});
         }
         fdm::particleVelocitySystem system(2);
         for (direction d = 0; d < 6; ++d)

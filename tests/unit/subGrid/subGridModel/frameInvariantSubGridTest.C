@@ -77,7 +77,7 @@ void update
     fdm::findNearPairs(box, x, radii, m.pairReach(), near);
     const fdm::positionStep euler(fdm::positionStep::euler(1e-3));
     const List<vector> Uold(x.size(), Zero);
-    m.update({x, radii, box, near, euler, Uold, 0});
+    m.update({x, radii, box, near, euler, Uold, 0, labelList()});
 }
 
 const fdm::periodicBox periodic10
