@@ -14,6 +14,7 @@ Description
 #include "fdmParticleCloud.H"
 #include "sumToOwners.H"
 #include "pairSearch.H"
+#include "ListOps.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -24,34 +25,6 @@ namespace
 Foam::scalar smallestGapReach(const Foam::scalarField& radii)
 {
     return 2*Foam::min(radii);
-}
-
-
-//- The pairs with a particle this rank owns (owner; all when empty)
-Foam::DynamicList<Foam::labelPair> pairsHeld
-(
-    const Foam::UList<Foam::labelPair>& near,
-    const Foam::labelUList& owner
-)
-{
-    using namespace Foam;
-    if (owner.empty())
-    {
-        return DynamicList<labelPair>(near);
-    }
-    DynamicList<labelPair> held;
-    for (const labelPair& pq : near)
-    {
-        if
-        (
-            owner[pq.first()] == Pstream::myProcNo()
-         || owner[pq.second()] == Pstream::myProcNo()
-        )
-        {
-            held.append(pq);
-        }
-    }
-    return held;
 }
 
 } // End anonymous namespace
@@ -76,11 +49,24 @@ void Foam::fdmParticleCloud::findOverlapBlocks()
     {
         return;
     }
-    fdm::selectNearPairs
-    (
-        box_, state_.position, state_.radius, supportOverlapReach(), near_,
-        overlapPairs_
-    );
+    // Every rank sums every overlap block: from the whole neighbour list,
+    // or a search of its own where a rank has the pairs of its particles
+    if (distributedSolve_)
+    {
+        fdm::findNearPairs
+        (
+            box_, state_.position, state_.radius, supportOverlapReach(),
+            overlapPairs_
+        );
+    }
+    else
+    {
+        fdm::selectNearPairs
+        (
+            box_, state_.position, state_.radius, supportOverlapReach(),
+            near_, overlapPairs_
+        );
+    }
     overlapBlocks_ =
         stencils_.overlapBlocks(mesh_.V(), alphaLambda_, overlapPairs_);
     fdm::sumOverRanks(overlapBlocks_);
@@ -97,7 +83,23 @@ void Foam::fdmParticleCloud::updatePairs()
     {
         reach = max(reach, pi.pairReach());
     }
-    fdm::findNearPairs(box_, state_.position, state_.radius, reach, near_);
+    // Solved by subdomain, a rank has the pairs with a particle it owns
+    // (both owners of a pair across ranks compute it)
+    if (distributedSolve_)
+    {
+        fdm::findNearPairs
+        (
+            box_, state_.position, state_.radius, reach,
+            findIndices(owner_, Pstream::myProcNo()), near_
+        );
+    }
+    else
+    {
+        fdm::findNearPairs
+        (
+            box_, state_.position, state_.radius, reach, near_
+        );
+    }
     findOverlapBlocks();
 
     const fdm::positionStep step
@@ -107,12 +109,9 @@ void Foam::fdmParticleCloud::updatePairs()
             positionScheme_, historyDeltaT_, mesh_.time().deltaTValue()
         )
     );
-    // Solved by subdomain, a rank computes the pairs of its own particles
-    // (owner_; empty when every rank computes all)
-    const DynamicList<labelPair> held(pairsHeld(near_, owner_));
     const fdm::pairStepInput in
     {
-        state_.position, state_.radius, box_, held, step, state_.Uold, 0,
+        state_.position, state_.radius, box_, near_, step, state_.Uold, 0,
         owner_
     };
     for (pairInteraction& pi : pairInteractions_)
@@ -198,12 +197,14 @@ Foam::scalar Foam::fdmParticleCloud::smallestGap() const
         return 2;
     }
     const scalar a1 = min(state_.radius);
-    return
+    const scalar gap =
         fdm::smallestSurfaceGap
         (
             box_, state_.position, state_.radius,
             smallestGapReach(state_.radius), near_
         )/a1;
+    // Each rank's pairs, when it has those of its own particles
+    return distributedSolve_ ? returnReduce(gap, minOp<scalar>()) : gap;
 }
 
 

@@ -5,6 +5,9 @@
 
 #include "pairSearch.H"
 #include "labelList.H"
+#include "boolList.H"
+#include "UIndirectList.H"
+#include "ListOps.H"
 #include "Pair.H"
 #include <algorithm>
 #include <cmath>
@@ -162,29 +165,50 @@ void Foam::fdm::findNearPairs
     DynamicList<labelPair>& pairs
 )
 {
+    findNearPairs
+    (
+        box, positions, radii, cutoff, identity(positions.size()), pairs
+    );
+}
+
+
+void Foam::fdm::findNearPairs
+(
+    const periodicBox& box,
+    const UList<point>& positions,
+    const UList<scalar>& radii,
+    const scalar cutoff,
+    const labelUList& from,
+    DynamicList<labelPair>& pairs
+)
+{
     pairs.clear();
     const label n = positions.size();
     if (n < 2)
     {
         return;
     }
+    boolList searched(n, false);
+    UIndirectList<bool>(searched, from) = true;
 
     const binGrid grid(box, positions, 2*max(radii) + cutoff);
     DynamicList<label> neighbourBins(27);
-    for (label p = 0; p < n; ++p)
+    for (const label p : from)
     {
         grid.neighbours(p, neighbourBins);
         for (const label b : neighbourBins)
         {
             for (label q = grid.head(b); q != -1; q = grid.next(q))
             {
-                if (q <= p)
+                // A pair of two searched particles is found from the
+                // first
+                if (q == p || (searched[q] && q < p))
                 {
                     continue;
                 }
                 if (withinReach(box, positions, radii, cutoff, p, q))
                 {
-                    pairs.append(labelPair(p, q));
+                    pairs.append(labelPair(min(p, q), max(p, q)));
                 }
             }
         }

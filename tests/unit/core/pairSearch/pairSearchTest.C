@@ -2,6 +2,9 @@
 // Foam::fdm::smallestSurfaceGap
 
 #include "pairSearch.H"
+#include "boolList.H"
+#include "UIndirectList.H"
+#include "ListOps.H"
 
 #include <gtest/gtest.h>
 #include <random>
@@ -108,6 +111,62 @@ TEST(pairSearch, selectionFromALargerSearchIsTheSmallerSearch)
     }
     EXPECT_GT(narrow.size(), 0);
     EXPECT_LT(narrow.size(), wide.size() + 1);
+}
+
+
+TEST(pairSearch, searchFromSomeParticlesGivesTheirPairsOfTheWholeSearch)
+{
+    // A rank searching from the particles it owns (every third one, and
+    // the last) finds, in order, the pairs of the whole search with one of
+    // them, across the periodic faces too; from all it is the whole search
+    const fdm::periodicBox box(point(0, -10, 0), point(20, 10, 20),
+        FixedList<bool, 3>({true, false, true}));
+    std::mt19937 gen(11);
+    std::uniform_real_distribution<scalar> u01(0, 1);
+    const label n = 500;
+    List<point> x(n);
+    List<scalar> a(n);
+    forAll(x, i)
+    {
+        for (direction d = 0; d < 3; ++d)
+        {
+            x[i][d] = box.min()[d] + box.span()[d]*u01(gen);
+        }
+        a[i] = u01(gen) < 0.5 ? 1.0 : 1.4;
+    }
+    DynamicList<label> owned;
+    for (label i = 0; i < n; i += 3)
+    {
+        owned.append(i);
+    }
+    owned.append(n - 1);
+    boolList isOwned(n, false);
+    UIndirectList<bool>(isOwned, owned) = true;
+
+    DynamicList<labelPair> whole, fromOwned, fromAll;
+    fdm::findNearPairs(box, x, a, 0.3, whole);
+    fdm::findNearPairs(box, x, a, 0.3, owned, fromOwned);
+    fdm::findNearPairs(box, x, a, 0.3, identity(n), fromAll);
+    DynamicList<labelPair> expected;
+    for (const labelPair& pq : whole)
+    {
+        if (isOwned[pq.first()] || isOwned[pq.second()])
+        {
+            expected.append(pq);
+        }
+    }
+    ASSERT_GT(expected.size(), 0);
+    ASSERT_LT(expected.size(), whole.size());
+    ASSERT_EQ(fromOwned.size(), expected.size());
+    forAll(expected, k)
+    {
+        EXPECT_EQ(fromOwned[k], expected[k]);
+    }
+    ASSERT_EQ(fromAll.size(), whole.size());
+    forAll(whole, k)
+    {
+        EXPECT_EQ(fromAll[k], whole[k]);
+    }
 }
 
 
