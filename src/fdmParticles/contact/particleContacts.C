@@ -6,7 +6,6 @@
 #include "particleContacts.H"
 #include "pairSearch.H"
 #include "contactLoads.H"
-#include "pairsOverRanks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -342,9 +341,9 @@ Foam::fdm::contactNetwork Foam::particleContacts::network
             forces.append(e.force + e.spring.force(U, Omega).force);
         }
     }
-    const List<labelPair> allPairs(fdm::gatherOnMaster(pairs));
-    const List<vector> allBranches(fdm::gatherOnMaster(branches));
-    const List<vector> allForces(fdm::gatherOnMaster(forces));
+    const List<labelPair> allPairs(onMaster(pairs));
+    const List<vector> allBranches(onMaster(branches));
+    const List<vector> allForces(onMaster(forces));
     fdm::contactNetwork links;
     forAll(allPairs, c)
     {

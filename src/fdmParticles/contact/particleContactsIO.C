@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "particleContacts.H"
-#include "pairsOverRanks.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -84,7 +83,7 @@ Foam::particleContacts::wholeHistory() const
         }
     }
     fdm::pairHistory<vector> whole;
-    whole.reset(fdm::gatherOnMaster(pairs), fdm::gatherOnMaster(slips));
+    whole.reset(onMaster(pairs), onMaster(slips));
     return whole;
 }
 
