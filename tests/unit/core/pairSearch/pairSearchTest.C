@@ -34,13 +34,15 @@ std::set<std::pair<label, label>> bruteForcePairs(const fdm::periodicBox& box,
     return pairs;
 }
 
-void compareWithBruteForce(const fdm::periodicBox& box, const label n,
-    const unsigned seed)
+//- n spheres of radius 1 or 1.4 placed at random in the box (overlaps
+//  allowed: the search does not care)
+void randomSpheres(const fdm::periodicBox& box, const label n,
+    const unsigned seed, List<point>& x, List<scalar>& a)
 {
     std::mt19937 gen(seed);
     std::uniform_real_distribution<scalar> u01(0, 1);
-    List<point> x(n);
-    List<scalar> a(n);
+    x.setSize(n);
+    a.setSize(n);
     forAll(x, i)
     {
         for (direction d = 0; d < 3; ++d)
@@ -49,6 +51,14 @@ void compareWithBruteForce(const fdm::periodicBox& box, const label n,
         }
         a[i] = u01(gen) < 0.5 ? 1.0 : 1.4;
     }
+}
+
+void compareWithBruteForce(const fdm::periodicBox& box, const label n,
+    const unsigned seed)
+{
+    List<point> x;
+    List<scalar> a;
+    randomSpheres(box, n, seed, x, a);
 
     DynamicList<labelPair> pairs;
     fdm::findNearPairs(box, x, a, 0.3, pairs);
@@ -85,18 +95,9 @@ TEST(pairSearch, selectionFromALargerSearchIsTheSmallerSearch)
     // gives the pairs, in order, that a search at the smaller cutoff gives
     const fdm::periodicBox box(point(0, -10, 0), point(20, 10, 20),
         FixedList<bool, 3>({true, false, true}));
-    std::mt19937 gen(7);
-    std::uniform_real_distribution<scalar> u01(0, 1);
-    List<point> x(600);
-    List<scalar> a(x.size());
-    forAll(x, i)
-    {
-        for (direction d = 0; d < 3; ++d)
-        {
-            x[i][d] = box.min()[d] + box.span()[d]*u01(gen);
-        }
-        a[i] = u01(gen) < 0.5 ? 1.0 : 1.4;
-    }
+    List<point> x;
+    List<scalar> a;
+    randomSpheres(box, 600, 7, x, a);
     DynamicList<labelPair> wide, narrow, selected;
     fdm::findNearPairs(box, x, a, 2, wide);
     for (const scalar cutoff : {0.0, 5e-3, 0.3, 2.0})
@@ -121,19 +122,10 @@ TEST(pairSearch, searchFromSomeParticlesGivesTheirPairsOfTheWholeSearch)
     // them, across the periodic faces too; from all it is the whole search
     const fdm::periodicBox box(point(0, -10, 0), point(20, 10, 20),
         FixedList<bool, 3>({true, false, true}));
-    std::mt19937 gen(11);
-    std::uniform_real_distribution<scalar> u01(0, 1);
     const label n = 500;
-    List<point> x(n);
-    List<scalar> a(n);
-    forAll(x, i)
-    {
-        for (direction d = 0; d < 3; ++d)
-        {
-            x[i][d] = box.min()[d] + box.span()[d]*u01(gen);
-        }
-        a[i] = u01(gen) < 0.5 ? 1.0 : 1.4;
-    }
+    List<point> x;
+    List<scalar> a;
+    randomSpheres(box, n, 11, x, a);
     DynamicList<label> owned;
     for (label i = 0; i < n; i += 3)
     {
