@@ -85,21 +85,14 @@ void Foam::fdmParticleCloud::updatePairs()
     }
     // Solved by subdomain, a rank has the pairs with a particle it owns
     // (both owners of a pair across ranks compute it)
-    if (distributedSolve_)
-    {
-        fdm::findNearPairs
-        (
-            box_, state_.position, state_.radius, reach,
-            findIndices(owner_, Pstream::myProcNo()), near_
-        );
-    }
-    else
-    {
-        fdm::findNearPairs
-        (
-            box_, state_.position, state_.radius, reach, near_
-        );
-    }
+    fdm::findNearPairs
+    (
+        box_, state_.position, state_.radius, reach,
+        distributedSolve_
+      ? findIndices(owner_, Pstream::myProcNo())
+      : identity(size()),
+        near_
+    );
     findOverlapBlocks();
 
     const fdm::positionStep step
