@@ -253,7 +253,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     distributedSolve_(false),
     contacts_(new noContacts(0)),
     lambdaPartsSum_(Zero),
-    timings_{0, 0, 0, 0},
+    timings_{0, 0, 0, 0, 0},
     lastSolve_{0, 0, true},
     lambdaResidual_(0)
 {

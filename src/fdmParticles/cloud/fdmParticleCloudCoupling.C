@@ -277,6 +277,7 @@ Foam::scalar Foam::fdmParticleCloud::correct
     if (solved_)
     {
         relinearisePairs();
+        clock.timeIncrement();
     }
     const scalar residualScale = assembleSystem(sums);
     lastSolve_ =

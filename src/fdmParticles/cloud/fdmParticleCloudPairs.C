@@ -15,6 +15,7 @@ Description
 #include "sumToOwners.H"
 #include "pairSearch.H"
 #include "ListOps.H"
+#include "clockTime.H"
 
 // * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
 
@@ -75,6 +76,8 @@ void Foam::fdmParticleCloud::findOverlapBlocks()
 
 void Foam::fdmParticleCloud::updatePairs()
 {
+    clockTime clock;
+
     // One neighbour search per step serves the pair interactions, the
     // overlapping supports and the smallest gap of the progress line
     scalar reach =
@@ -115,6 +118,7 @@ void Foam::fdmParticleCloud::updatePairs()
             pi.report();
         }
     }
+    timings_.pairs += clock.elapsedTime();
 }
 
 
@@ -123,6 +127,7 @@ void Foam::fdmParticleCloud::addPairLoads()
     // Hydrodynamic totals: FDM + sub-grid (eqs 2.9, 2.68); contact loads:
     // the explicit part and the implicit stiffness' share at the solved
     // velocities
+    clockTime clock;
     contact_ = contacts_->loads();
     const fdm::fluidProperties fluid{rhoFluid_, nu_};
     const auto addTo = [&](fdm::particleLoads& hydro, List<scalar>& trace)
@@ -140,6 +145,7 @@ void Foam::fdmParticleCloud::addPairLoads()
     if (!distributedSolve_)
     {
         addTo(hydro_, dipoleTrace_);
+        timings_.pairs += clock.elapsedTime();
         return;
     }
     // Solved by subdomain, a rank holds the pair loads of its own
@@ -162,15 +168,18 @@ void Foam::fdmParticleCloud::addPairLoads()
         hydro_.stresslet[p] += pairs.stresslet[p];
         dipoleTrace_[p] += trace[p];
     }
+    timings_.pairs += clock.elapsedTime();
 }
 
 
 void Foam::fdmParticleCloud::relinearisePairs()
 {
+    clockTime clock;
     for (pairInteraction& pi : pairInteractions_)
     {
         pi.relinearise(state_.U);
     }
+    timings_.pairs += clock.elapsedTime();
 }
 
 

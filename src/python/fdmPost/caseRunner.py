@@ -132,20 +132,22 @@ def foam_get(case, entry, path):
 
 
 # The columns of the solver's "Timing [s]" report (reportTimings.H), all
-# cumulative since the start of the run
+# cumulative since the start of the run; pairs (the pair search, updates,
+# relinearisation and loads) is 0 in logs from before it was reported
 TIMING_COLUMNS = ("outer", "steps", "total", "flow", "indicators",
                   "integrals", "particleSolve", "corrections",
-                  "acceleration", "output")
+                  "acceleration", "output", "pairs")
 TIMING = re.compile(
     r"Timing \[s\] after (\d+) outer iterations in (\d+) step\(s\): total "
     r"(\S+),.*\n\s+flow (\S+), indicators (\S+), lambda/u integrals (\S+), "
     r"particle solve (\S+), corrections (\S+), acceleration (\S+), output "
-    r"(\S+),")
+    r"(\S+),(?: pairs (\S+),)?")
 
 
 def timing_lines(text):
     """Each Timing report of a log as a list of floats, TIMING_COLUMNS."""
-    return [[float(v) for v in m.groups()] for m in TIMING.finditer(text)]
+    return [[float(v or 0) for v in m.groups()]
+            for m in TIMING.finditer(text)]
 
 
 def snapshot_case(source, time, work):

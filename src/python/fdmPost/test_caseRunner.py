@@ -28,7 +28,15 @@ class TimingLinesTest(unittest.TestCase):
         self.assertEqual(row["flow"], 0.669359745)
         self.assertEqual(row["acceleration"], 0.075277111)
         self.assertEqual(row["output"], 0.128903588)
+        self.assertEqual(row["pairs"], 0)   # a log from before the column
         self.assertEqual(rows[1][0], 30)
+
+    def test_pair_column(self):
+        log = LOG.replace("output 0.128903588,",
+                          "output 0.128903588, pairs 0.0421,")
+        row = dict(zip(TIMING_COLUMNS, timing_lines(log)[0]))
+        self.assertEqual(row["pairs"], 0.0421)
+        self.assertEqual(row["output"], 0.128903588)
 
     def test_no_report(self):
         self.assertEqual(timing_lines("Time = 0\nEnd\n"), [])

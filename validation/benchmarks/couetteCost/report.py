@@ -33,18 +33,20 @@ def main(rows, base, mcells):
         "2.54)." % (n, os.uname().nodename, os.cpu_count()),
         "",
         "| scheme | gammaDot dt | ranks | outer its/step | lambda residual "
-        "| s/step | flow | forcing | particle solve | acceleration | output "
-        "| other | core-s/step/10^6 cells | core-s per strain/10^6 cells "
+        "| s/step | flow | forcing | particle solve | pairs | acceleration "
+        "| output | other | core-s/step/10^6 cells | core-s per strain/10^6 cells "
         "| peak memory/rank [MiB] | memory per 10^6 cells [GiB] |",
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+        "---|"]
     for r in rows:
         mem = r["peak"] / 1024.0
         lines.append(
-            "| %s | %g | %d | %.1f | %.1e | %.2f | %.2f | %.2f | %.3f | %.2f "
-            "| %.3f | %.2f | %.1f | %.0f | %.0f | %.2f |" % (
+            "| %s | %g | %d | %.1f | %.1e | %.2f | %.2f | %.2f | %.3f | %.3f "
+            "| %.2f | %.3f | %.2f | %.1f | %.0f | %.0f | %.2f |" % (
                 r["name"], r["dt"], r["nprocs"], r["outer"], r["residual"],
                 r["total"], r["flow"], r["forcing"], r["particles"],
-                r["acceleration"], r["output"], r["rest"], core_s(r),
+                r.get("pairs", 0), r["acceleration"], r["output"], r["rest"],
+                core_s(r),
                 core_s(r) / r["dt"], mem, mem * r["nprocs"] / 1024.0 / mcells))
     lines += ["", "Published (thesis 1, Table 4.9, gammaDot dt = 1e-4): "
               "%d-%d core-seconds per step per 10^6 cells, ~10 loops per "

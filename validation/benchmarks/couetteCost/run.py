@@ -158,8 +158,8 @@ def parse(case):
     return {
         "steps": int(n), "outer": d[0], "total": d[2], "flow": d[3],
         "forcing": d[4] + d[5] + d[7], "particles": d[6],
-        "acceleration": d[8], "output": d[9],
-        "rest": d[2] - d[3] - d[4] - d[5] - d[6] - d[7] - d[8] - d[9],
+        "acceleration": d[8], "output": d[9], "pairs": d[10],
+        "rest": d[2] - sum(d[3:11]),
         "residual": max(residuals[1:]) if len(residuals) > 1 else float("nan"),
         "contacts": int(contacts[-1]) if contacts else 0,
     }

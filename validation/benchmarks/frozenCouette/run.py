@@ -350,12 +350,12 @@ def solve(case, end):
     if not timing:
         raise RuntimeError("no Timing line in %s" % case)
     # The last step's solve work (flow, forcing, particle solve,
-    # acceleration), without start-up and output; serial, so seconds are
-    # core-seconds
+    # acceleration, pairs), without start-up and output; serial, so
+    # seconds are core-seconds
     last = np.array(timing[-1]) - (np.array(timing[-2]) if len(timing) > 1
                                    else 0)
     outer = int(last[0])
-    seconds = sum(last[3:9])
+    seconds = sum(last[3:9]) + last[10]
     residual = re.findall(r"lambda residual (\S+),", text)
     return {"coreSeconds": seconds, "outer": outer,
             "residual": float(residual[-1]) if residual else float("nan"),
