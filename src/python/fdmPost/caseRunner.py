@@ -6,6 +6,7 @@ fill_template  copy a template case and replace its @TOKENS@
 run_case       blockMesh + fdmSuspensionFoam; the last particles.h5 record
 read_last_record   that record of a case already run
 run_logged, foam_set, foam_get   a command, a dictionary entry, in a case
+run_measured   a command's wall time and its largest process' peak memory
 timing_lines   the cumulative Timing lines of an fdmSuspensionFoam log
 snapshot_case  constant/, system/ and one written time of a run, copied
 work_lock      one benchmark at a time in a work folder
@@ -16,6 +17,8 @@ import os
 import re
 import shutil
 import subprocess
+import sys
+import time
 
 import numpy as np
 
@@ -115,6 +118,23 @@ def run_logged(cmd, case, log):
                              stderr=subprocess.STDOUT, env=in_case(case))
     if rc != 0:
         raise RuntimeError("%s failed in %s (see %s)" % (cmd, case, log))
+
+
+# Runs a command and writes the peak resident set size [KiB] of its
+# largest process (getrusage of the children of a fresh interpreter: with
+# mpirun, the largest rank)
+PEAK = ("import resource, subprocess, sys; rc = subprocess.call(sys.argv[2:]);"
+        " open(sys.argv[1], 'w').write(str(resource.getrusage("
+        "resource.RUSAGE_CHILDREN).ru_maxrss)); sys.exit(rc)")
+
+
+def run_measured(cmd, case, log):
+    """run_logged, returning the wall seconds and the peak resident set
+    size [KiB] of the largest process cmd started."""
+    start = time.time()
+    run_logged([sys.executable, "-c", PEAK, "peakMemory"] + cmd, case, log)
+    wall = time.time() - start
+    return wall, int(open(os.path.join(case, "peakMemory")).read())
 
 
 def foam_set(case, entry, value, path):

@@ -41,14 +41,14 @@ import os
 import re
 import shutil
 import sys
-import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.environ["FDM_PROJECT_DIR"]
 TUTORIAL = os.path.join(PROJECT, "tutorials", "couette")
 L, CELLS, PHI0, DT, TOL = 20, 100, 0.42, 1e-3, 1e-4
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
-from fdmPost.caseRunner import foam_set, run_logged, timing_lines  # noqa
+from fdmPost.caseRunner import (foam_set, run_logged, run_measured,  # noqa
+                                timing_lines)
 
 
 def base_case(work):
@@ -115,13 +115,6 @@ def policy_case(work, base, name, dt, steps):
     return case
 
 
-# Runs a command and writes the peak resident set size [KiB] of its
-# largest process (getrusage of the children of a fresh interpreter)
-PEAK = ("import resource, subprocess, sys; rc = subprocess.call(sys.argv[2:]);"
-        " open(sys.argv[1], 'w').write(str(resource.getrusage("
-        "resource.RUSAGE_CHILDREN).ru_maxrss)); sys.exit(rc)")
-
-
 def run_timed(case, nprocs):
     if nprocs > 1:
         foam_set(case, "numberOfSubdomains", nprocs, "system/decomposeParDict")
@@ -132,11 +125,7 @@ def run_timed(case, nprocs):
                "fdmSuspensionFoam", "-parallel"]
     else:
         cmd = ["fdmSuspensionFoam"]
-    start = time.time()
-    run_logged([sys.executable, "-c", PEAK, "peakMemory"] + cmd, case,
-               "log.fdmSuspensionFoam")
-    wall = time.time() - start
-    return wall, int(open(os.path.join(case, "peakMemory")).read())
+    return run_measured(cmd, case, "log.fdmSuspensionFoam")
 
 
 def parse(case):

@@ -1,0 +1,170 @@
+#!/usr/bin/env python3
+"""Issue 38 measured in the solver: wall time per step, split as the
+solver's Timing report splits it, and peak memory per rank of
+fdmSuspensionFoam against the particle count and the rank count, with the
+particle system solved whole on every rank (parallelParticleSolve
+replicated) and by subdomain (distributed).
+
+The case is tutorials/couette at a larger size: monodisperse spheres
+(a = 1) at phi 0.3 between walls moving at +-L/2 (shear rate 1), packed by
+fdmPackParticles (seed 1) in an L^3 box with L from N, hertz contacts as
+in the tutorial.  Delta = a/2 keeps the fluid affordable at 10^4
+particles on this machine, so there is no sub-grid lubrication (its tables
+are for Delta = a/4 .. a/6) and the indicator work per particle is
+(5/2)^3 times smaller than at the thesis' a/5: this measures how the
+particle work grows with N and ranks, not the cost of a production step.
+Every step is solved to a lambda residual of 1e-3; the cost per step is
+that of steps 2 .. --steps (the first pays the set-up and the initial
+solve).  The domain is cut into slabs along x, one per rank.  Ranks beyond
+the cores share them: their wall times are then upper bounds.
+
+    inSolver.py [--sizes 1000,10000] [--ranks 1,2,4] [--steps 3]
+
+writes inSolver.md here (cases in build/benchmarks/particleDistribution).
+"""
+
+import argparse
+import os
+import re
+import shutil
+import sys
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+PROJECT = os.environ["FDM_PROJECT_DIR"]
+TUTORIAL = os.path.join(PROJECT, "tutorials", "couette")
+PHI, CELLS_PER_A, DT, TOL = 0.3, 2, 4e-3, 1e-3
+sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
+from fdmPost.caseRunner import (TIMING_COLUMNS, foam_set, run_logged,  # noqa
+                                run_measured, timing_lines, work_lock)
+
+PARTS = ("flow", "indicators", "integrals", "particleSolve", "corrections",
+         "pairs", "acceleration")
+
+
+def box_side(n):
+    """The box edge [a] holding n unit spheres at PHI."""
+    return int(round((n * 4.0 / 3.0 * np.pi / PHI) ** (1.0 / 3.0)))
+
+
+def base_case(work, n):
+    """The packed and meshed case of about n particles, run by none."""
+    case = os.path.join(work, "N%d" % n)
+    if os.path.isfile(os.path.join(case, "constant", "polyMesh", "owner")):
+        return case
+    shutil.rmtree(case, ignore_errors=True)
+    os.makedirs(case)
+    for d in ("0", "constant", "system"):
+        shutil.copytree(os.path.join(TUTORIAL, d), os.path.join(case, d))
+    L = box_side(n)
+    mesh = os.path.join(case, "system", "blockMeshDict")
+    text = open(mesh).read()
+    for k, v in (("Lx", L), ("Ly", L), ("Lz", L)) + tuple(
+            (k, CELLS_PER_A * L) for k in ("nx", "ny", "nz")):
+        text = re.sub(r"^%s .*$" % k, "%s      %d;" % (k, v), text, flags=re.M)
+    open(mesh, "w").write(text)
+    for wall, sign in (("bottomWall", -1), ("topWall", 1)):
+        foam_set(case, "boundaryField.%s.value" % wall,
+                 "uniform (%g 0 0)" % (sign * L / 2.0), "0/U")
+    props = "constant/particleProperties"
+    foam_set(case, "subGrid", "{ model none; }", props)
+    for key in ("lambdaTolerance", "lambdaToleranceFirstStep",
+                "lambdaToleranceBetweenRecords"):
+        foam_set(case, "coupling." + key, TOL, props)
+    foam_set(case, "output.timeSeriesInterval", 1000, props)
+    foam_set(case, "deltaT", DT, "system/controlDict")
+    foam_set(case, "writeInterval", 1000, "system/controlDict")
+    foam_set(case, "functions", "{}", "system/controlDict")
+    run_logged(["fdmPackParticles", "--box", str(L), str(L), str(L),
+                "--walls", "y", "--phi", str(PHI), "--ratio", "1",
+                "--seed", "1", "-o", "constant/particleList"],
+               case, "log.fdmPackParticles")
+    run_logged(["blockMesh"], case, "log.blockMesh")
+    return case
+
+
+def run_point(base, scheme, ranks, steps):
+    """One run of steps steps; its per-step costs and peak memory."""
+    case = "%s_%s_%d" % (base, scheme, ranks)
+    shutil.rmtree(case, ignore_errors=True)
+    os.makedirs(case)
+    for d in ("0", "constant", "system"):
+        shutil.copytree(os.path.join(base, d), os.path.join(case, d),
+                        symlinks=True)
+    foam_set(case, "coupling.parallelParticleSolve", scheme,
+             "constant/particleProperties")
+    foam_set(case, "endTime", steps * DT, "system/controlDict")
+    cmd = ["fdmSuspensionFoam"]
+    if ranks > 1:
+        foam_set(case, "numberOfSubdomains", ranks, "system/decomposeParDict")
+        foam_set(case, "coeffs.n", "(%d 1 1)" % ranks,
+                 "system/decomposeParDict")
+        run_logged(["decomposePar"], case, "log.decomposePar")
+        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd + [
+            "-parallel"]
+    wall, peak = run_measured(cmd, case, "log.fdmSuspensionFoam")
+    log = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
+    timing = timing_lines(log)
+    first, last = (dict(zip(TIMING_COLUMNS, timing[i])) for i in (0, -1))
+    n = last["steps"] - first["steps"]
+    per = {k: (last[k] - first[k]) / n for k in TIMING_COLUMNS}
+    per["other"] = per["total"] - sum(per[k] for k in PARTS + ("output",))
+    per.update(peakMiB=peak / 1024.0, wall=wall,
+               particles=int(re.search(r"(\d+) particles", log).group(1)))
+    shutil.rmtree(case, ignore_errors=True)
+    return per
+
+
+def table(rows):
+    head = ("| N | scheme | ranks | s/step | outer/step | "
+            + " | ".join(PARTS) + " | other | peak MiB/rank |")
+    lines = [head, "|" + "---|" * (head.count("|") - 1)]
+    for r in rows:
+        lines.append(
+            "| %d | %s | %d | %.3f | %.1f | " % (
+                r["particles"], r["scheme"], r["ranks"], r["total"],
+                r["outer"])
+            + " | ".join("%.4f" % r[k] for k in PARTS)
+            + " | %.4f | %.0f |" % (r["other"], r["peakMiB"]))
+    return lines
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--sizes", default="1000,10000")
+    parser.add_argument("--ranks", default="1,2,4")
+    parser.add_argument("--steps", type=int, default=3)
+    args = parser.parse_args()
+    work = os.path.join(PROJECT, "build", "benchmarks",
+                        "particleDistribution")
+    lock = work_lock(work)
+    rows = []
+    for n in (int(s) for s in args.sizes.split(",")):
+        base = base_case(work, n)
+        for ranks in (int(r) for r in args.ranks.split(",")):
+            for scheme in ("replicated", "distributed")[:1 + (ranks > 1)]:
+                r = run_point(base, scheme, ranks, args.steps)
+                r.update(scheme=scheme, ranks=ranks)
+                rows.append(r)
+                print(table([r])[-1], flush=True)
+    lines = [
+        "# Particle work in the solver, replicated against by subdomain",
+        "",
+        "`inSolver.py --sizes %s --ranks %s --steps %d` on %s (%d cores): "
+        "Couette, monodisperse a = 1, phi %g, Delta = a/%d, hertz contacts, "
+        "no sub-grid, lambda residual %g, gammaDot dt %g; wall seconds per "
+        "step over steps 2 .. %d, the columns of the solver's Timing report "
+        "(flow: the SIMPLEC solves; acceleration: the outer iteration's "
+        "Anderson step; other: the move, state copies, logging). Ranks "
+        "beyond the cores share them." % (
+            args.sizes, args.ranks, args.steps, os.uname().nodename,
+            os.cpu_count(), PHI, CELLS_PER_A, TOL, DT, args.steps),
+        ""] + table(rows)
+    open(os.path.join(HERE, "inSolver.md"), "w").write("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    lock.close()
+
+
+if __name__ == "__main__":
+    main()
