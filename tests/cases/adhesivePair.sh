@@ -23,7 +23,9 @@
 # over with the contact's accumulated slip.  Its positions, velocities and
 # FDM, sub-grid and contact loads are compared with the serial run's.  Both
 # solve the coupling to a lambda residual of 1e-4 (1e-5 for load0.9, 1e-3
-# for load1.1), so that they stop close to the same state.
+# for load1.1), so that they stop close to the same state.  The 2-rank
+# run's state at time 1, continued in serial to time 2, must end where
+# both runs end: a restart from another decomposition.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir adhesivePair)
@@ -70,6 +72,8 @@ cp "$caseTemplates/adhesivePair/tumbling/system/"* "$tumbling/system/"
 ) || exit 1
 mkdir -p "$tumbling.2ranks"
 cp -r "$tumbling"/{0,constant,system} "$tumbling.2ranks"/
+foamDictionary -entry writeInterval -set 20 \
+    "$tumbling.2ranks/system/controlDict" > /dev/null || exit 1
 
 for run in load0.9 load1.1 tumbling
 do
@@ -79,4 +83,14 @@ do
     ) || exit 1
 done
 runBySubdomain "$tumbling.2ranks" || exit 1
+# Restart from another decomposition: the 2-rank state of time 1 (the
+# contact history with it) continued serially to time 2
+(
+    cd "$tumbling.2ranks" && runLogged reconstructPar -time 1 || exit 1
+    mkdir -p "$tumbling.restart" || exit 1
+    cp -r "$tumbling"/{constant,system} 1 "$tumbling.restart"/ || exit 1
+    cd "$tumbling.restart" || exit 1
+    foamDictionary -entry startFrom -set latestTime system/controlDict \
+        > /dev/null && runLogged fdmSuspensionFoam
+) || exit 1
 "$FDM_PYTHON" "$caseTemplates/checkAdhesivePair.py" "$work"
