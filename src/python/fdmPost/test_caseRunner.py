@@ -2,10 +2,12 @@
 benchmarks use it; the sample is a line pair fdmSuspensionFoam wrote.
 work_lock keeps a second benchmark run out of a work folder in use."""
 
+import sys
 import tempfile
 import unittest
 
-from fdmPost.caseRunner import TIMING_COLUMNS, timing_lines, work_lock
+from fdmPost.caseRunner import (TIMING_COLUMNS, run_measured, timing_lines,
+                                work_lock)
 
 LOG = """Time = 2.004
 Timing [s] after 12 outer iterations in 1 step(s): total 1, per step 1, \
@@ -40,6 +42,21 @@ class TimingLinesTest(unittest.TestCase):
 
     def test_no_report(self):
         self.assertEqual(timing_lines("Time = 0\nEnd\n"), [])
+
+
+class RunMeasuredTest(unittest.TestCase):
+    def test_peak_memory_of_the_command(self):
+        """A child that holds 200 MiB reports at least that, and one that
+        holds nothing far less (the interpreter's own size)."""
+        with tempfile.TemporaryDirectory() as case:
+            hold = ("b = bytearray(200 * 2**20); "
+                    "b[::4096] = b'x' * len(b[::4096])")
+            wall, big = run_measured([sys.executable, "-c", hold], case, "log")
+            _, small = run_measured([sys.executable, "-c", "pass"], case,
+                                    "log")
+        self.assertGreater(big, 200 * 1024)
+        self.assertLess(small, 100 * 1024)
+        self.assertGreater(wall, 0)
 
 
 class WorkLockTest(unittest.TestCase):
