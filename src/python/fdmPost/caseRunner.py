@@ -3,6 +3,7 @@ measurement loops of the sub-grid calibration and of the validations.
 
 cell_offsets   positions inside a mesh cell to average over
 fill_template  copy a template case and replace its @TOKENS@
+copy_case      a fresh case of another's 0, constant and system
 run_case       blockMesh + fdmSuspensionFoam; the last particles.h5 record
 read_last_record   that record of a case already run
 run_logged, foam_set, foam_get   a command, a dictionary entry, in a case
@@ -55,6 +56,15 @@ def fill_template(template, case, tokens):
                 text = text.replace(k, v)
             with open(path, "w") as f:
                 f.write(text)
+
+
+def copy_case(source, case):
+    """A fresh case holding source's 0, constant and system (not its
+    times, logs or processor folders)."""
+    shutil.rmtree(case, ignore_errors=True)
+    os.makedirs(case)
+    for d in ("0", "constant", "system"):
+        shutil.copytree(os.path.join(source, d), os.path.join(case, d))
 
 
 def run_case(case, keep_mesh=False):

@@ -1,13 +1,15 @@
 """timing_lines reads the solver's Timing report (reportTimings.H) as the
 benchmarks use it; the sample is a line pair fdmSuspensionFoam wrote.
-work_lock keeps a second benchmark run out of a work folder in use."""
+work_lock keeps a second benchmark run out of a work folder in use;
+run_measured and copy_case."""
 
+import os
 import sys
 import tempfile
 import unittest
 
-from fdmPost.caseRunner import (TIMING_COLUMNS, run_measured, timing_lines,
-                                work_lock)
+from fdmPost.caseRunner import (TIMING_COLUMNS, copy_case, run_measured,
+                                timing_lines, work_lock)
 
 LOG = """Time = 2.004
 Timing [s] after 12 outer iterations in 1 step(s): total 1, per step 1, \
@@ -57,6 +59,21 @@ class RunMeasuredTest(unittest.TestCase):
         self.assertGreater(big, 200 * 1024)
         self.assertLess(small, 100 * 1024)
         self.assertGreater(wall, 0)
+
+
+class CopyCaseTest(unittest.TestCase):
+    def test_only_the_set_up_is_copied_over_a_stale_case(self):
+        with tempfile.TemporaryDirectory() as work:
+            source, case = (os.path.join(work, n) for n in ("a", "b"))
+            for d in ("0", "constant", "system", "1", "processor0"):
+                os.makedirs(os.path.join(source, d))
+                open(os.path.join(source, d, "f"), "w").write(d)
+            os.makedirs(os.path.join(case, "2"))
+            copy_case(source, case)
+            self.assertEqual(sorted(os.listdir(case)),
+                             ["0", "constant", "system"])
+            self.assertEqual(open(os.path.join(case, "system", "f")).read(),
+                             "system")
 
 
 class WorkLockTest(unittest.TestCase):

@@ -47,18 +47,15 @@ PROJECT = os.environ["FDM_PROJECT_DIR"]
 TUTORIAL = os.path.join(PROJECT, "tutorials", "couette")
 L, CELLS, PHI0, DT, TOL = 20, 100, 0.42, 1e-3, 1e-4
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
-from fdmPost.caseRunner import (foam_set, run_logged, run_measured,  # noqa
-                                timing_lines)
+from fdmPost.caseRunner import (copy_case, foam_set, run_logged,  # noqa
+                                run_measured, timing_lines)
 
 
 def base_case(work):
     case = os.path.join(work, "base")
     if os.path.isfile(os.path.join(case, "%g" % DT, "particleState")):
         return case
-    shutil.rmtree(case, ignore_errors=True)
-    os.makedirs(case)
-    for d in ("0", "constant", "system"):
-        shutil.copytree(os.path.join(TUTORIAL, d), os.path.join(case, d))
+    copy_case(TUTORIAL, case)
     shutil.rmtree(os.path.join(case, "constant", "polyMesh"),
                   ignore_errors=True)
     # sed, not foamDictionary, which would expand the $Lx macros

@@ -36,8 +36,9 @@ PROJECT = os.environ["FDM_PROJECT_DIR"]
 TUTORIAL = os.path.join(PROJECT, "tutorials", "couette")
 PHI, CELLS_PER_A, DT, TOL = 0.3, 2, 4e-3, 1e-3
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
-from fdmPost.caseRunner import (TIMING_COLUMNS, foam_set, run_logged,  # noqa
-                                run_measured, timing_lines, work_lock)
+from fdmPost.caseRunner import (TIMING_COLUMNS, copy_case,  # noqa: E402
+                                foam_set, run_logged, run_measured,
+                                timing_lines, work_lock)
 
 PARTS = ("flow", "indicators", "integrals", "particleSolve", "corrections",
          "pairs", "acceleration")
@@ -53,10 +54,7 @@ def base_case(work, n):
     case = os.path.join(work, "N%d" % n)
     if os.path.isfile(os.path.join(case, "constant", "polyMesh", "owner")):
         return case
-    shutil.rmtree(case, ignore_errors=True)
-    os.makedirs(case)
-    for d in ("0", "constant", "system"):
-        shutil.copytree(os.path.join(TUTORIAL, d), os.path.join(case, d))
+    copy_case(TUTORIAL, case)
     L = box_side(n)
     mesh = os.path.join(case, "system", "blockMeshDict")
     text = open(mesh).read()
@@ -87,11 +85,7 @@ def base_case(work, n):
 def run_point(base, scheme, ranks, steps):
     """One run of steps steps; its per-step costs and peak memory."""
     case = "%s_%s_%d" % (base, scheme, ranks)
-    shutil.rmtree(case, ignore_errors=True)
-    os.makedirs(case)
-    for d in ("0", "constant", "system"):
-        shutil.copytree(os.path.join(base, d), os.path.join(case, d),
-                        symlinks=True)
+    copy_case(base, case)
     foam_set(case, "coupling.parallelParticleSolve", scheme,
              "constant/particleProperties")
     foam_set(case, "endTime", steps * DT, "system/controlDict")

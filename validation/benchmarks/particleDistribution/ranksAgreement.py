@@ -23,7 +23,6 @@ writes ranksAgreement.md here (cases in build/benchmarks/particleDistribution
 
 import argparse
 import os
-import shutil
 import sys
 
 import h5py
@@ -33,8 +32,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.environ["FDM_PROJECT_DIR"]
 TUTORIAL = os.path.join(PROJECT, "tutorials", "couette")
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
-from fdmPost.caseRunner import (foam_get, foam_set, run_logged,  # noqa
-                                work_lock)
+from fdmPost.caseRunner import (copy_case, foam_get, foam_set,  # noqa
+                                run_logged, work_lock)
 
 DECOMPOSITION = {2: "(2 1 1)", 4: "(4 1 1)", 8: "(2 2 2)"}
 TOLERANCES = {
@@ -49,14 +48,12 @@ TIGHT_FLOW = {"solvers.p.tolerance": 1e-10, "solvers.p.relTol": 0,
 
 
 def make_case(work, tolerances, steps):
-    """The packed and meshed tutorial at these tolerances, run by none."""
-    case = os.path.join(work, tolerances)
+    """The packed and meshed tutorial at these tolerances and steps, run by
+    none (the runs made from it are kept and reused)."""
+    case = os.path.join(work, "%s_%dsteps" % (tolerances, steps))
     if os.path.isfile(os.path.join(case, "constant", "polyMesh", "owner")):
         return case
-    shutil.rmtree(case, ignore_errors=True)
-    os.makedirs(case)
-    for d in ("0", "constant", "system"):
-        shutil.copytree(os.path.join(TUTORIAL, d), os.path.join(case, d))
+    copy_case(TUTORIAL, case)
     props = "constant/particleProperties"
     foam_set(case, "output.timeSeriesInterval", 1, props)
     for key, value in TOLERANCES[tolerances].items():
@@ -81,10 +78,7 @@ def run(base, ranks, scheme):
     case = "%s_%d_%s" % (base, ranks, scheme)
     if not os.path.isfile(os.path.join(case, "postProcessing",
                                        "particles.h5")):
-        shutil.rmtree(case, ignore_errors=True)
-        os.makedirs(case)
-        for d in ("0", "constant", "system"):
-            shutil.copytree(os.path.join(base, d), os.path.join(case, d))
+        copy_case(base, case)
         foam_set(case, "coupling.parallelParticleSolve", scheme,
                  "constant/particleProperties")
         cmd = ["fdmSuspensionFoam"]
