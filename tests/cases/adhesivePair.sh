@@ -24,8 +24,9 @@
 # FDM, sub-grid and contact loads are compared with the serial run's.  Both
 # solve the coupling to a lambda residual of 1e-4 (1e-5 for load0.9, 1e-3
 # for load1.1), so that they stop close to the same state.  The 2-rank
-# run's state at time 1, continued in serial to time 2, must end where
-# both runs end: a restart from another decomposition.
+# run's state at time 1, continued in serial to time 2 (a restart from
+# another decomposition, the contact's slip read back), must follow the
+# serial run record by record.
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir adhesivePair)
