@@ -8,6 +8,7 @@ run_case       blockMesh + fdmSuspensionFoam; the last particles.h5 record
 read_last_record   that record of a case already run
 run_logged, foam_set, foam_get   a command, a dictionary entry, in a case
 run_measured   a command's wall time and its largest process' peak memory
+solver_command fdmSuspensionFoam serially, or decomposed and run by mpirun
 timing_lines   the cumulative Timing lines of an fdmSuspensionFoam log
 snapshot_case  constant/, system/ and one written time of a run, copied
 work_lock      one benchmark at a time in a work folder
@@ -145,6 +146,21 @@ def run_measured(cmd, case, log):
     run_logged([sys.executable, "-c", PEAK, "peakMemory"] + cmd, case, log)
     wall = time.time() - start
     return wall, int(open(os.path.join(case, "peakMemory")).read())
+
+
+def solver_command(case, ranks, split=None):
+    """The command that runs fdmSuspensionFoam in case: serially for one
+    rank, else on ranks ranks (oversubscribed beyond the cores) after
+    decomposing the case's latest time by its decomposeParDict (simple)
+    into split, by default (ranks 1 1)."""
+    if ranks == 1:
+        return ["fdmSuspensionFoam"]
+    dictionary = "system/decomposeParDict"
+    foam_set(case, "numberOfSubdomains", ranks, dictionary)
+    foam_set(case, "coeffs.n", split or "(%d 1 1)" % ranks, dictionary)
+    run_logged(["decomposePar", "-latestTime"], case, "log.decomposePar")
+    return ["mpirun", "-np", str(ranks), "--oversubscribe",
+            "fdmSuspensionFoam", "-parallel"]
 
 
 def foam_set(case, entry, value, path):

@@ -48,7 +48,7 @@ TUTORIAL = os.path.join(PROJECT, "tutorials", "couette")
 L, CELLS, PHI0, DT, TOL = 20, 100, 0.42, 1e-3, 1e-4
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (copy_case, foam_set, run_logged,  # noqa
-                                run_measured, timing_lines)
+                                run_measured, solver_command, timing_lines)
 
 
 def base_case(work):
@@ -112,19 +112,6 @@ def policy_case(work, base, name, dt, steps):
     return case
 
 
-def run_timed(case, nprocs):
-    if nprocs > 1:
-        foam_set(case, "numberOfSubdomains", nprocs, "system/decomposeParDict")
-        foam_set(case, "coeffs.n", "(%d 1 1)" % nprocs,
-                 "system/decomposeParDict")
-        run_logged(["decomposePar", "-latestTime"], case, "log.decomposePar")
-        cmd = ["mpirun", "-np", str(nprocs), "--oversubscribe",
-               "fdmSuspensionFoam", "-parallel"]
-    else:
-        cmd = ["fdmSuspensionFoam"]
-    return run_measured(cmd, case, "log.fdmSuspensionFoam")
-
-
 def parse(case):
     """Per-step costs of steps 2.. from the cumulative Timing lines, and
     the lambda residual at the end of every step."""
@@ -171,7 +158,8 @@ def main():
         nprocs = 2 if name.endswith("2") else 1
         steps = args.thesis_steps if name == "thesis" else args.steps
         case = policy_case(work, base, name, dt, steps)
-        wall, peak = run_timed(case, nprocs)
+        wall, peak = run_measured(solver_command(case, nprocs), case,
+                                  "log.fdmSuspensionFoam")
         r = parse(case)
         r.update(name=name, dt=dt, nprocs=nprocs, wall=wall, peak=peak)
         rows.append(r)

@@ -38,7 +38,7 @@ PHI, CELLS_PER_A, DT, TOL = 0.3, 2, 4e-3, 1e-3
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (TIMING_COLUMNS, copy_case,  # noqa: E402
                                 foam_set, run_logged, run_measured,
-                                timing_lines, work_lock)
+                                solver_command, timing_lines, work_lock)
 
 PARTS = ("flow", "indicators", "integrals", "particleSolve", "corrections",
          "pairs", "acceleration")
@@ -89,15 +89,8 @@ def run_point(base, scheme, ranks, steps):
     foam_set(case, "coupling.parallelParticleSolve", scheme,
              "constant/particleProperties")
     foam_set(case, "endTime", steps * DT, "system/controlDict")
-    cmd = ["fdmSuspensionFoam"]
-    if ranks > 1:
-        foam_set(case, "numberOfSubdomains", ranks, "system/decomposeParDict")
-        foam_set(case, "coeffs.n", "(%d 1 1)" % ranks,
-                 "system/decomposeParDict")
-        run_logged(["decomposePar"], case, "log.decomposePar")
-        cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd + [
-            "-parallel"]
-    wall, peak = run_measured(cmd, case, "log.fdmSuspensionFoam")
+    wall, peak = run_measured(solver_command(case, ranks), case,
+                              "log.fdmSuspensionFoam")
     log = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
     timing = timing_lines(log)
     first, last = (dict(zip(TIMING_COLUMNS, timing[i])) for i in (0, -1))

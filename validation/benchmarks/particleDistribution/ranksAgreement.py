@@ -33,7 +33,7 @@ PROJECT = os.environ["FDM_PROJECT_DIR"]
 TUTORIAL = os.path.join(PROJECT, "tutorials", "couette")
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (copy_case, foam_get, foam_set,  # noqa
-                                run_logged, work_lock)
+                                run_logged, solver_command, work_lock)
 
 DECOMPOSITION = {2: "(2 1 1)", 4: "(4 1 1)", 8: "(2 2 2)"}
 TOLERANCES = {
@@ -81,16 +81,8 @@ def run(base, ranks, scheme):
         copy_case(base, case)
         foam_set(case, "coupling.parallelParticleSolve", scheme,
                  "constant/particleProperties")
-        cmd = ["fdmSuspensionFoam"]
-        if ranks > 1:
-            foam_set(case, "numberOfSubdomains", ranks,
-                     "system/decomposeParDict")
-            foam_set(case, "coeffs.n", DECOMPOSITION[ranks],
-                     "system/decomposeParDict")
-            run_logged(["decomposePar"], case, "log.decomposePar")
-            cmd = ["mpirun", "-np", str(ranks), "--oversubscribe"] + cmd + [
-                "-parallel"]
-        run_logged(cmd, case, "log.fdmSuspensionFoam")
+        run_logged(solver_command(case, ranks, DECOMPOSITION.get(ranks)),
+                   case, "log.fdmSuspensionFoam")
     with h5py.File(os.path.join(case, "postProcessing", "particles.h5"),
                    "r") as f:
         return {k: f[k][:] for k in ("time", "position", "velocity",
