@@ -23,6 +23,22 @@ def last(case):
                                       "angularVelocity", "contactForce")}
 
 
+# The series compared with the serial run, and what each is scaled by:
+# a, the velocity scale (shear rate and a are 1), the largest contact force
+COMPARED = {"position": 1, "velocity": 1, "angularVelocity": 1,
+            "force": None, "contactForce": None, "stresslet": None,
+            "contactStresslet": None}
+
+
+def against_serial(c, label, run, serial, force, position_tol, tol):
+    """Each compared series of run against serial's, record by record,
+    positions to position_tol, the rest to tol."""
+    for key, scale in COMPARED.items():
+        scale, t = scale or force, position_tol if key == "position" else tol
+        c.check("%s: %s vs serial (max, scaled)" % (label, key),
+                np.abs(run[key] - serial[key]).max() / scale, t)
+
+
 def tumbling(c, work):
     """The tumbling doublet on 2 ranks against the serial run: both stop
     at a lambda residual of 1e-4, at outer iterations a round-off apart;
@@ -44,13 +60,8 @@ def tumbling(c, work):
     x = serial["position"][:, :, 0]
     fc = serial["contactForce"][:, 0]
     force = np.abs(fc).max()
-    scales = {"position": (1, 1e-3), "velocity": (1, 1.5e-2),
-              "angularVelocity": (1, 1.5e-2), "force": (force, 1.5e-2),
-              "contactForce": (force, 1.5e-2), "stresslet": (force, 1.5e-2),
-              "contactStresslet": (force, 1.5e-2)}
-    for key, (scale, tol) in scales.items():
-        c.check("tumbling 2 ranks: %s vs serial (max, scaled)" % key,
-                np.abs(parallel[key] - serial[key]).max() / scale, tol)
+    against_serial(c, "tumbling 2 ranks", parallel, serial, force, 1e-3,
+                   1.5e-2)
 
     # The path: sphere 0 crosses the cut first, then sphere 1 the other
     # way, both on rank 1 in between, bonded throughout
@@ -86,14 +97,9 @@ def restarted(c, work, force, serial):
         restart = {k: f[k][:] for k in serial}
     c.check("tumbling restart: records from time 1 to 2 (count error)",
             abs(len(time) - 21) + abs(time[0] - 1) + abs(time[-1] - 2), 1e-9)
-    scales = {"position": (1, 5e-5), "velocity": (1, 5e-4),
-              "angularVelocity": (1, 5e-4), "force": (force, 5e-4),
-              "contactForce": (force, 5e-4), "stresslet": (force, 5e-4),
-              "contactStresslet": (force, 5e-4)}
-    for key, (scale, tol) in scales.items():
-        c.check("tumbling restart: %s vs serial (max, scaled)" % key,
-                np.abs(restart[key] - serial[key][-len(time):]).max()
-                / scale, tol)
+    against_serial(c, "tumbling restart", restart,
+                   {k: v[-len(time):] for k, v in serial.items()}, force,
+                   5e-5, 5e-4)
 
 
 def main(work):
