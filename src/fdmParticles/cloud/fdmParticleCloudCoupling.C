@@ -277,7 +277,7 @@ Foam::scalar Foam::fdmParticleCloud::correct
     if (solved_)
     {
         relinearisePairs();
-        clock.timeIncrement();
+        clock.timeIncrement();      // counted in timings_.pairs
     }
     const scalar residualScale = assembleSystem(sums);
     lastSolve_ =
