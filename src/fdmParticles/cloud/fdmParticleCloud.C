@@ -320,15 +320,13 @@ Foam::fdmParticleCloud::fdmParticleCloud
     (
         dict_,
         mesh_,
-        subGridModel::settings
-        {
-            delta_, indicator_.b(), indicator_.c(), gapFloor
-        },
+        {delta_, indicator_.b(), indicator_.c(), gapFloor},
         state_.radius
     );
     pairInteractions_.setSize(2);
     pairInteractions_.set(0, &subGrid_());
     pairInteractions_.set(1, &contacts_());
+    setHalo();
 
     output_.reset
     (

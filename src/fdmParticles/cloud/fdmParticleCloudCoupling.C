@@ -4,22 +4,56 @@
 
 Description
     The FDM coupling of one outer iteration (thesis 1, eqs 2.41-2.45 in the
-    smoothed form 2.53) and the motion between time steps.
+    smoothed form 2.53): the stencils and owners at the current positions,
+    the particle system, its solve and the corrections, and the loads.
 
 \*---------------------------------------------------------------------------*/
 
 #include "fdmParticleCloud.H"
 #include "ranksHoldingPoints.H"
-#include "adamsBashforth.H"
 #include "clockTime.H"
 #include "sumToOwners.H"
-#include "leesEdwardsShear.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 void Foam::fdmParticleCloud::buildStencils()
 {
     clockTime clock;
+
+    // The rank that solves each particle's rows: its centre's, found among
+    // the ranks holding the particle
+    if (distributedSolve_)
+    {
+        const labelList owner
+        (
+            fdm::ranksHoldingPoints
+            (
+                state_.position, mesh_.C().primitiveField(), cellBins_(),
+                delta_, halo_.held()
+            )
+        );
+        const label lost = owner.find(-1);
+        if (lost >= 0)
+        {
+            FatalErrorInFunction
+                << "Particle " << lost << " at time "
+                << mesh_.time().timeName() << ": its centre "
+                << state_.position[lost] << " is in no cell of the ranks"
+                << " holding it; it moved further than its reach in one"
+                << " step." << nl << "    Lower deltaT in system/controlDict;"
+                << " the last written time is the last good state."
+                << exit(FatalError);
+        }
+        halo_.setOwners
+        (
+            owner, state_.position, fdm::couplingStencils::imageShifts(box_)
+        );
+        ownedRows_.setOwners(owner);
+        if (!firstSolveDone_)
+        {
+            halo_.report();
+        }
+    }
 
     stencils_.build
     (
@@ -29,28 +63,14 @@ void Foam::fdmParticleCloud::buildStencils()
         state_.radius,
         indicator_,
         box_,
-        consistentOverlaps_
+        consistentOverlaps_,
+        halo_.held()
     );
     lambdaPrev_.setSize(stencils_.supportCells().size());
 
-    // The rank that solves each particle's rows: its centre's (the master
-    // for a centre in no rank's cells)
-    if (distributedSolve_)
-    {
-        owner_ = fdm::ranksHoldingPoints
-        (
-            state_.position, mesh_.C().primitiveField(), cellBins_(), delta_
-        );
-        forAll(owner_, p)
-        {
-            owner_[p] = owner_[p] < 0 ? Pstream::masterNo() : owner_[p];
-        }
-        ownedRows_.setOwners(owner_);
-    }
-
-    // Pseudo-mass moments (eq 2.53), summed over ranks
+    // Pseudo-mass moments (eq 2.53), summed over ranks (on the owners)
     moments_ = stencils_.moments(mesh_.V());
-    fdm::sumToOwners(moments_, owner_, stencils_);
+    fdm::sumToOwners(moments_, halo_.owner(), stencils_);
 
     timings_.indicators += clock.elapsedTime();
 }
@@ -75,7 +95,7 @@ Foam::scalar Foam::fdmParticleCloud::assembleSystem
     forAll(state_.position, p)
     {
         // Solved by subdomain, this rank holds the sums of its own only
-        if (distributedSolve_ && owner_[p] != Pstream::myProcNo())
+        if (!halo_.owns(p))
         {
             continue;
         }
@@ -146,107 +166,6 @@ Foam::scalar Foam::fdmParticleCloud::lambdaChange
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
-void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
-{
-    if (empty())
-    {
-        return;
-    }
-
-    buildStencils();
-    updatePairs();
-
-    // A solved state read at a restart keeps the loads it was written
-    // with, and its contacts are linearised about the gaps its velocities
-    // predict, as they were
-    if (solved_)
-    {
-        relinearisePairs();
-    }
-
-    // lambda is not advected (thesis 2.4, step 2): keep it where a support
-    // still covers the cell as the initial guess, zero elsewhere.
-    boolList inSupport(mesh_.nCells(), false);
-    for (const label celli : stencils_.supportCells())
-    {
-        inSupport[celli] = true;
-    }
-    vectorField& l = lambda.primitiveFieldRef();
-    forAll(l, celli)
-    {
-        if (!inSupport[celli])
-        {
-            l[celli] = Zero;
-        }
-    }
-    lambda.correctBoundaryConditions();
-}
-
-
-void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
-{
-    if (empty())
-    {
-        return;
-    }
-    if (!solved_)
-    {
-        FatalErrorInFunction
-            << "Particles cannot move before their velocities are solved"
-            << abort(FatalError);
-    }
-
-    for (pairInteraction& pi : pairInteractions_)
-    {
-        pi.advance(state_.U, state_.Omega, deltaT);
-    }
-    // The sheared images of the new time (Lees-Edwards): a particle
-    // wrapped across the sheared faces takes the flow's velocity there
-    fdm::setLeesEdwardsShear(mesh_, box_);
-    const fdm::positionStep step
-    (
-        fdm::positionStep::after(positionScheme_, historyDeltaT_, deltaT)
-    );
-    forAll(state_.position, p)
-    {
-        const point x =
-            state_.position[p]
-          + step.displacement(state_.U[p], state_.Uold[p]);
-        state_.U[p] = box_.wrapVelocity(x, state_.U[p]);
-        state_.position[p] = box_.wrap(x);
-    }
-    state_.Uold = state_.U;
-    historyDeltaT_ = deltaT;
-    solved_ = false;
-
-    // A particle pushed through a wall means the coupling has failed
-    forAll(state_.position, p)
-    {
-        for (direction d = 0; d < 3; ++d)
-        {
-            const scalar lo = box_.min()[d];
-            const scalar hi = lo + box_.span()[d];
-            if
-            (
-                !box_.periodic(d)
-             && (state_.position[p][d] < lo || state_.position[p][d] > hi)
-            )
-            {
-                FatalErrorInFunction
-                    << "Particle " << p << " left the domain at time "
-                    << mesh_.time().timeName() << ": position "
-                    << state_.position[p] << ", velocity " << state_.U[p] << nl
-                    << "    Reduce deltaT in system/controlDict; the last"
-                    << " written time is the last good state."
-                    << exit(FatalError);
-            }
-        }
-    }
-
-    prepare(lambda);
-}
-
-
 Foam::scalar Foam::fdmParticleCloud::correct
 (
     volVectorField& U,
@@ -268,7 +187,7 @@ Foam::scalar Foam::fdmParticleCloud::correct
     (
         stencils_.integrals(V, u, l)
     );
-    fdm::sumToOwners(sums, owner_, stencils_);
+    fdm::sumToOwners(sums, halo_.owner(), stencils_);
     timings_.integrals += clock.timeIncrement();
 
     // From the second outer iteration on, the contacts linearised again
@@ -284,8 +203,8 @@ Foam::scalar Foam::fdmParticleCloud::correct
         distributedSolve_
       ? ownedSolve_.solve
         (
-            ownedRows_.entries(), owner_, solveTolerance_, 1000, state_.U,
-            state_.Omega, residualScale
+            ownedRows_.entries(), halo_.owner(), solveTolerance_, 1000,
+            state_.U, state_.Omega, residualScale
         )
       : system_.solve
         (
@@ -299,6 +218,7 @@ Foam::scalar Foam::fdmParticleCloud::correct
             << lastSolve_.relativeResidual << ", particleSolveTolerance "
             << solveTolerance_ << ")" << endl;
     }
+    halo_.sendToGhosts(state_.U, state_.Omega);
     timings_.solve += clock.timeIncrement();
 
     // Corrections (eq 2.53): lambda from u** first, then u
@@ -347,7 +267,7 @@ void Foam::fdmParticleCloud::finishSolve
     (
         stencils_.dipoles(V, l, pc, pMean)
     );
-    fdm::sumOverRanks(sums);
+    fdm::sumToOwners(sums, halo_.owner(), stencils_);
     lambdaPartsSum_ = Zero;
     forAll(state_.position, n)
     {
@@ -364,6 +284,10 @@ void Foam::fdmParticleCloud::finishSolve
         );
         hydro_.stresslet[n] = dev(symm(D));
         dipoleTrace_[n] = tr(D);
+    }
+    if (distributedSolve_)
+    {
+        reduce(lambdaPartsSum_, sumOp<vector>());
     }
 
     addPairLoads();

@@ -63,6 +63,10 @@ void Foam::fdmParticleCloud::checkMotionResolved(const scalar deltaT) const
     scalar largest = 0;
     forAll(state_.U, p)
     {
+        if (!halo_.holds(p))
+        {
+            continue;
+        }
         const scalar courant = mag(state_.U[p])*deltaT/delta_;
         if (!(courant <= largest))
         {
@@ -88,7 +92,18 @@ void Foam::fdmParticleCloud::checkMotionResolved(const scalar deltaT) const
 }
 
 
-void Foam::fdmParticleCloud::writeState() const
+void Foam::fdmParticleCloud::gatherOnMaster()
+{
+    halo_.gatherOnMaster
+    (
+        state_.position, state_.U, state_.Omega, state_.Uold,
+        hydro_.force, hydro_.torque, hydro_.stresslet, dipoleTrace_,
+        contact_.force, contact_.torque, contact_.stresslet
+    );
+}
+
+
+void Foam::fdmParticleCloud::writeState()
 {
     // Every rank has written its fields of this time before the particle
     // state, the last file of a time directory, appears: a time with a
@@ -100,7 +115,9 @@ void Foam::fdmParticleCloud::writeState() const
     {
         return;
     }
-    // Each rank's contacts when solved by subdomain, on the master
+    // Each rank's particles and contacts when solved by subdomain, on the
+    // master
+    gatherOnMaster();
     const fdm::pairHistory<vector> contactHistory(contacts_->wholeHistory());
     if (!Pstream::master())
     {
@@ -171,7 +188,7 @@ Foam::fdmParticleCloud::hdf5Description() const
 Foam::particleCloudOutput::particles
 Foam::fdmParticleCloud::outputView() const
 {
-    return {state_, hydro_, dipoleTrace_, contact_};
+    return {state_, hydro_, dipoleTrace_, contact_, halo_.held()};
 }
 
 
@@ -183,6 +200,7 @@ void Foam::fdmParticleCloud::writeTimeSeries()
     }
     if (output_->timeSeriesDue())
     {
+        gatherOnMaster();
         checkFinite();
     }
     output_->writeTimeSeries
@@ -210,6 +228,7 @@ void Foam::fdmParticleCloud::writeVTK()
     {
         return;
     }
+    gatherOnMaster();
     checkFinite();
     // Each rank's contacts when solved by subdomain, on the master
     output_->writeVTK

@@ -44,20 +44,58 @@ Foam::scalar Foam::fdmParticleCloud::supportOverlapReach() const
 }
 
 
+Foam::scalar Foam::fdmParticleCloud::interactionReach() const
+{
+    scalar reach = supportOverlapReach();
+    for (const pairInteraction& pi : pairInteractions_)
+    {
+        reach = max(reach, pi.pairReach());
+    }
+    return reach;
+}
+
+
+void Foam::fdmParticleCloud::setHalo()
+{
+    if (!distributedSolve_)
+    {
+        return;
+    }
+    // What a particle reaches beyond its centre: the cells of its support
+    // (centres within supportRadius) and the partners of its pairs and
+    // overlaps (centres within a + a_max + their gap), a hair more
+    const scalar aMax = max(state_.radius);
+    const scalar gap = interactionReach();
+    scalarField reach(size());
+    forAll(reach, p)
+    {
+        const scalar a = state_.radius[p];
+        reach[p] =
+            (1 + 1e-9)*max(indicator_.supportRadius(a), a + aMax + gap);
+    }
+    halo_ = fdm::particleHalo
+    (
+        fdm::particleHalo::gatherBoxes(boundBox(mesh_.points(), false)),
+        reach
+    );
+}
+
+
 void Foam::fdmParticleCloud::findOverlapBlocks()
 {
     if (!consistentOverlaps_)
     {
         return;
     }
-    // Every rank sums every overlap block: from the whole neighbour list,
-    // or a search of its own where a rank has the pairs of its particles
+    // From the whole neighbour list; by subdomain, every pair among the
+    // particles held here whose supports may meet in this rank's cells,
+    // each block summed on the owners of its two particles
     if (distributedSolve_)
     {
         fdm::findNearPairs
         (
             box_, state_.position, state_.radius, supportOverlapReach(),
-            overlapPairs_
+            findIndices(halo_.held(), true), halo_.held(), overlapPairs_
         );
     }
     else
@@ -70,7 +108,10 @@ void Foam::fdmParticleCloud::findOverlapBlocks()
     }
     overlapBlocks_ =
         stencils_.overlapBlocks(mesh_.V(), alphaLambda_, overlapPairs_);
-    fdm::sumOverRanks(overlapBlocks_);
+    fdm::sumPairsToOwners
+    (
+        overlapPairs_, overlapBlocks_, halo_.owner(), stencils_
+    );
 }
 
 
@@ -79,23 +120,27 @@ void Foam::fdmParticleCloud::updatePairs()
     clockTime clock;
 
     // One neighbour search per step serves the pair interactions, the
-    // overlapping supports and the smallest gap of the progress line
-    scalar reach =
-        max(smallestGapReach(state_.radius), supportOverlapReach());
-    for (const pairInteraction& pi : pairInteractions_)
-    {
-        reach = max(reach, pi.pairReach());
-    }
+    // overlapping supports and the smallest gap of the progress line.
+    const scalar reach =
+        max(smallestGapReach(state_.radius), interactionReach());
     // Solved by subdomain, a rank has the pairs with a particle it owns
-    // (both owners of a pair across ranks compute it)
-    fdm::findNearPairs
-    (
-        box_, state_.position, state_.radius, reach,
-        distributedSolve_
-      ? findIndices(owner_, Pstream::myProcNo())
-      : identity(size()),
-        near_
-    );
+    // (both owners of a pair across ranks compute it), among those it holds
+    if (distributedSolve_)
+    {
+        fdm::findNearPairs
+        (
+            box_, state_.position, state_.radius, reach,
+            findIndices(halo_.owner(), Pstream::myProcNo()), halo_.held(),
+            near_
+        );
+    }
+    else
+    {
+        fdm::findNearPairs
+        (
+            box_, state_.position, state_.radius, reach, near_
+        );
+    }
     findOverlapBlocks();
 
     const fdm::positionStep step
@@ -108,7 +153,7 @@ void Foam::fdmParticleCloud::updatePairs()
     const fdm::pairStepInput in
     {
         state_.position, state_.radius, box_, near_, step, state_.Uold, 0,
-        owner_
+        halo_.owner()
     };
     for (pairInteraction& pi : pairInteractions_)
     {
@@ -149,18 +194,19 @@ void Foam::fdmParticleCloud::addPairLoads()
         return;
     }
     // Solved by subdomain, a rank holds the pair loads of its own
-    // particles whole (and shares of its partners'): each particle's from
-    // its owner
+    // particles whole (and shares of its partners', which their owners
+    // count)
     fdm::particleLoads pairs(size());
     List<scalar> trace(size(), Zero);
     addTo(pairs, trace);
+    const labelList& owner = halo_.owner();
     for (fdm::particleLoads* loads : {&pairs, &contact_})
     {
-        fdm::spreadFromOwners(loads->force, owner_);
-        fdm::spreadFromOwners(loads->torque, owner_);
-        fdm::spreadFromOwners(loads->stresslet, owner_);
+        fdm::keepOwned(loads->force, owner);
+        fdm::keepOwned(loads->torque, owner);
+        fdm::keepOwned(loads->stresslet, owner);
     }
-    fdm::spreadFromOwners(trace, owner_);
+    fdm::keepOwned(trace, owner);
     forAll(pairs.force, p)
     {
         hydro_.force[p] += pairs.force[p];
@@ -205,7 +251,9 @@ Foam::scalar Foam::fdmParticleCloud::smallestGap() const
             box_, state_.position, state_.radius,
             smallestGapReach(state_.radius), near_
         )/a1;
-    // Each rank's pairs, when it has those of its own particles
+    // Each rank's pairs, when it has those of its own particles (among
+    // those it holds: exact up to the interactions' reach, where the
+    // gaps that matter are)
     return distributedSolve_ ? returnReduce(gap, minOp<scalar>()) : gap;
 }
 

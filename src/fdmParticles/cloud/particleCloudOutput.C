@@ -148,7 +148,10 @@ void Foam::particleCloudOutput::writeTimeSeries
 void Foam::particleCloudOutput::writeLagrangian(const particles& p) const
 {
     const fdm::particleState& s = p.state;
-    const lagrangianCloudWriter cloud(mesh_, "particles", s.position);
+    const lagrangianCloudWriter cloud
+    (
+        mesh_, "particles", s.position, p.current
+    );
     cloud.write("id", labelList(identity(s.size())));
     cloud.write("group", s.group);
     cloud.write("d", scalarField(2*s.radius));

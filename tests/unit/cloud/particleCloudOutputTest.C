@@ -38,7 +38,7 @@ struct twoParticles
 
     particleCloudOutput::particles view() const
     {
-        return {state, hydro, trace, contact};
+        return {state, hydro, trace, contact, UList<bool>::null()};
     }
 };
 

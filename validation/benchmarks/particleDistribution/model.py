@@ -5,12 +5,12 @@ rank holds every particle, sums the per-particle integrals over all ranks
 and solves the whole particle system) against particles owned by subdomain
 (each rank holds its own particles and the ghosts within the halo,
 exchanges with its neighbours and solves its block of the system with a
-parallel CG).  Between them, the solver's parallelParticleSolve distributed
-as it is now ("rows owned"): the rows, their integrals and the solve by
-owner, but the state, the pair search and the pair matrices of all
-particles on every rank, and the velocities of all particles summed to
-every rank after each solve (time and data only: its memory lies between
-the two).
+parallel CG).  Beside them, the solver's parallelParticleSolve distributed
+as it is now ("now", fdm::particleHalo): owned by subdomain, but each
+rank's particle lists are indexed by every particle (only the entries of
+its own and its ghosts current), the owners are agreed by a reduction of
+one label per particle and step, each step scans those lists a few times,
+and every exchange sends its sizes to all ranks (PstreamBuffers).
 
 The particle-side constants are measured here: the per-particle time of
 pair search, assembly and solve and the memory per particle come from the
@@ -52,6 +52,16 @@ ASSUMPTIONS = {
     "integralScalars": 12,
     "velocityScalars": 6,
     "neighbourRanks": 26,
+    # The scheme as it is now: bytes of the lists indexed by every particle
+    # on every rank (state, loads, moments, owners, stencil offsets; an
+    # upper estimate), seconds per particle and step for the scans of
+    # those lists, exchanges per step (moments, overlap blocks, contact
+    # histories, the move, the dipoles; per outer iteration the integrals
+    # and the velocities)
+    "listBytes": 1024,
+    "scanSeconds": 5e-8,
+    "fixedExchanges": 5,
+    "exchangesPerOuter": 2,
     # Network: latency per message and bandwidth per rank (an InfiniBand
     # cluster of the thesis' kind)
     "latency": 2e-6,
@@ -105,23 +115,23 @@ def tree_sum(n_scalars, p, c):
         2 * whole
 
 
-def rows_owned(n, p, c, k):
-    """Time per step [s] and bytes sent per step of one rank of the
-    solver's parallelParticleSolve distributed today."""
-    g = ghosts(n, p, c)
-    outer, fact = c["outerIterations"], c["factorisations"]
-    compute = (n * c["cellsPerParticle"] / p * c["cellStepSeconds"]
-               + n * k["setup"] + (n / p + g) * fact * k["solve"])
-    if p == 1:
-        return compute, 0.0
-    cgs = fact * c["cgIterations"]
-    velocities = tree_sum(n * c["velocityScalars"], p, c)
-    sent = (outer * g * c["integralScalars"] * 8 + cgs * g
-            * c["velocityScalars"] * 8 + outer * velocities[1])
-    comm = ((outer + cgs) * c["neighbourRanks"] * c["latency"]
-            + cgs * 2 * math.log2(p) * c["latency"]
-            + outer * velocities[0] + sent / c["bandwidth"])
-    return compute + comm, sent
+def now(n, p, c, k):
+    """Memory [GiB], time per step [s] and bytes sent per step of one rank
+    of the solver's parallelParticleSolve distributed as it is now: the
+    owned scheme, plus the lists of every particle, their scans, the
+    owners' reduction and the sizes of each exchange sent to every rank."""
+    memory, seconds, sent = per_rank(n, p, c, k, owned=True)
+    memory += n * c["listBytes"] / 2**30
+    seconds += n * c["scanSeconds"]
+    if p > 1:
+        owners = tree_sum(n / 2, p, c)          # 4-byte labels
+        exchanges = (c["fixedExchanges"]
+                     + c["exchangesPerOuter"] * c["outerIterations"])
+        sizes = exchanges * 4 * p
+        seconds += (owners[0] + exchanges * math.log2(p) * c["latency"]
+                    + sizes / c["bandwidth"])
+        sent += owners[1] + sizes
+    return memory, seconds, sent
 
 
 def per_rank(n, p, c, k, owned):
@@ -165,11 +175,11 @@ def strong_rows(c, k):
         for p in (1, 2, 4, 8, 64, 256, 1024):
             rep = per_rank(n, p, c, k, owned=False)
             own = per_rank(n, p, c, k, owned=True)
-            now = rows_owned(n, p, c, k)
+            cur = now(n, p, c, k)
             rows.append([f"{n:.0e}", str(p), f"{ghosts(n, p, c):.0f}",
-                         f"{rep[0]:.3g}", f"{own[0]:.3g}",
-                         f"{rep[1]:.3g}", f"{now[0]:.3g}", f"{own[1]:.3g}",
-                         f"{rep[2] / 2**20:.3g}", f"{now[1] / 2**20:.3g}",
+                         f"{rep[0]:.3g}", f"{cur[0]:.3g}", f"{own[0]:.3g}",
+                         f"{rep[1]:.3g}", f"{cur[1]:.3g}", f"{own[1]:.3g}",
+                         f"{rep[2] / 2**20:.3g}", f"{cur[2] / 2**20:.3g}",
                          f"{own[2] / 2**20:.3g}"])
     return rows
 
@@ -180,9 +190,10 @@ def weak_rows(c, k):
         p = max(1, round(n / c["particlesPerCore"]))
         rep = per_rank(n, p, c, k, owned=False)
         own = per_rank(n, p, c, k, owned=True)
-        now = rows_owned(n, p, c, k)
-        rows.append([f"{n:.0e}", str(p), f"{rep[0]:.3g}", f"{own[0]:.3g}",
-                     f"{rep[1]:.3g}", f"{now[0]:.3g}", f"{own[1]:.3g}"])
+        cur = now(n, p, c, k)
+        rows.append([f"{n:.0e}", str(p), f"{rep[0]:.3g}", f"{cur[0]:.3g}",
+                     f"{own[0]:.3g}", f"{rep[1]:.3g}", f"{cur[1]:.3g}",
+                     f"{own[1]:.3g}"])
     return rows
 
 
@@ -200,15 +211,15 @@ def report(system_path):
     lines += table(
         "Strong scaling: one rank, per step, at the thesis' cells per"
         " particle",
-        ["N", "ranks", "ghosts", "GiB replicated", "GiB owned",
-         "s replicated", "s rows owned", "s owned", "MiB sent replicated",
-         "MiB sent rows owned", "MiB sent owned"],
+        ["N", "ranks", "ghosts", "GiB replicated", "GiB now", "GiB owned",
+         "s replicated", "s now", "s owned", "MiB sent replicated",
+         "MiB sent now", "MiB sent owned"],
         strong_rows(c, k))
     lines += table(
         "Weak scaling at the thesis' particles per core"
         f" ({c['particlesPerCore']:.1f})",
-        ["N", "ranks", "GiB replicated", "GiB owned", "s replicated",
-         "s rows owned", "s owned"], weak_rows(c, k))
+        ["N", "ranks", "GiB replicated", "GiB now", "GiB owned",
+         "s replicated", "s now", "s owned"], weak_rows(c, k))
     return "\n".join(lines)
 
 

@@ -15,14 +15,19 @@ compared with the serial run of the same tolerances, record by record.
 Where the differences shrink with the tolerances, they are the solvers'
 stopping, not the decomposition.  Ranks beyond the cores share them.
 
-    ranksAgreement.py [--steps 25] [--ranks 2,4,8]
+    ranksAgreement.py [--steps 25] [--ranks 2,4,8] [--length 8]
+                      [--tolerances tutorial,tight]
 
 writes ranksAgreement.md here (cases in build/benchmarks/particleDistribution
-/agreement).
+/agreement).  --length stretches the box along the flow (x, periodic) at
+the same phi and Delta, so that a rank's slab is narrower than the box by
+more than the particles' reach and holds only some of them (the owned
+state of fdm::particleHalo); the report is then ranksAgreement_L<length>.md.
 """
 
 import argparse
 import os
+import re
 import sys
 
 import h5py
@@ -47,13 +52,22 @@ TIGHT_FLOW = {"solvers.p.tolerance": 1e-10, "solvers.p.relTol": 0,
               "solvers.U.tolerance": 1e-10, "solvers.U.relTol": 0}
 
 
-def make_case(work, tolerances, steps):
-    """The packed and meshed tutorial at these tolerances and steps, run by
-    none (the runs made from it are kept and reused)."""
-    case = os.path.join(work, "%s_%dsteps" % (tolerances, steps))
+def make_case(work, tolerances, steps, length):
+    """The packed and meshed tutorial at these tolerances and steps, its box
+    length along x, run by none (the runs made from it are kept and
+    reused)."""
+    case = os.path.join(work, "%s_%dsteps%s" % (
+        tolerances, steps, "" if length == 8 else "_L%d" % length))
     if os.path.isfile(os.path.join(case, "constant", "polyMesh", "owner")):
         return case
     copy_case(TUTORIAL, case)
+    # By text: foamDictionary -set would write the vertices' $Lx expanded
+    mesh = os.path.join(case, "system", "blockMeshDict")
+    text = open(mesh).read()
+    for key, value in (("Lx", length), ("nx", 5 * length)):
+        text = re.sub(r"^%s .*$" % key, "%s      %d;" % (key, value), text,
+                      flags=re.M)
+    open(mesh, "w").write(text)
     props = "constant/particleProperties"
     foam_set(case, "output.timeSeriesInterval", 1, props)
     for key, value in TOLERANCES[tolerances].items():
@@ -66,7 +80,8 @@ def make_case(work, tolerances, steps):
     foam_set(case, "endTime", steps * dt, control)
     foam_set(case, "writeInterval", steps, control)
     foam_set(case, "functions", "{}", control)
-    run_logged(["fdmPackParticles", "--box", "8", "8", "8", "--walls", "y",
+    run_logged(["fdmPackParticles", "--box", str(length), "8", "8",
+                "--walls", "y",
                 "--phi", "0.3", "--seed", "1", "-o",
                 "constant/particleList"], case, "log.fdmPackParticles")
     run_logged(["blockMesh"], case, "log.blockMesh")
@@ -106,6 +121,8 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--steps", type=int, default=25)
     parser.add_argument("--ranks", default="2,4,8")
+    parser.add_argument("--length", type=int, default=8)
+    parser.add_argument("--tolerances", default=",".join(TOLERANCES))
     args = parser.parse_args()
     work = os.path.join(PROJECT, "build", "benchmarks",
                         "particleDistribution", "agreement")
@@ -114,18 +131,20 @@ def main():
     lines = [
         "# Serial against 2, 4 and 8 ranks, solved by subdomain",
         "",
-        "`ranksAgreement.py --steps %d --ranks %s` (%s, %d cores): the "
-        "Couette tutorial (25 spheres, 8^3 a1, Delta a1/5), %d steps of "
+        "`ranksAgreement.py --steps %d --ranks %s --length %d` (%s, %d "
+        "cores): the Couette tutorial (%s a1, Delta a1/5), %d steps of "
         "gammaDot dt 4e-3 from its packing; the largest difference from "
         "the serial run over the records: positions in a1, velocities over "
         "the wall speed 4 a1 gammaDot, angular velocities over gammaDot, "
         "stresslets over the largest serial one." % (
-            args.steps, args.ranks, os.uname().nodename, os.cpu_count(),
+            args.steps, args.ranks, args.length, os.uname().nodename,
+            os.cpu_count(),
+            "8^3" if args.length == 8 else "%d x 8 x 8" % args.length,
             args.steps), "",
         "| tolerances | ranks | scheme | position | velocity | angular "
         "velocity | stresslet |", "|---|---|---|---|---|---|---|"]
-    for tolerances in TOLERANCES:
-        base = make_case(work, tolerances, args.steps)
+    for tolerances in args.tolerances.split(","):
+        base = make_case(work, tolerances, args.steps, args.length)
         serial = run(base, 1, "replicated")
         runs = [(2, "replicated")] + [
             (int(n), "distributed") for n in args.ranks.split(",")]
@@ -135,7 +154,9 @@ def main():
                 tolerances, ranks, scheme, d["position"], d["velocity"],
                 d["angularVelocity"], d["stresslet"]))
             print(lines[-1], flush=True)
-    open(os.path.join(HERE, "ranksAgreement.md"), "w").write(
+    report = "ranksAgreement%s.md" % (
+        "" if args.length == 8 else "_L%d" % args.length)
+    open(os.path.join(HERE, report), "w").write(
         "\n".join(lines) + "\n")
     print("\n".join(lines))
     lock.close()

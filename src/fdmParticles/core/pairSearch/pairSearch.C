@@ -66,6 +66,7 @@ public:
     (
         const fdm::periodicBox& box,
         const UList<point>& positions,
+        const UList<bool>& among,
         const scalar binSize
     )
     :
@@ -80,6 +81,10 @@ public:
         head_.setSize(nBins_[0]*nBins_[1]*nBins_[2], -1);
         forAll(positions, p)
         {
+            if (!among[p])
+            {
+                continue;
+            }
             for (direction d = 0; d < 3; ++d)
             {
                 coords_[p][d] = coord(positions[p], d);
@@ -182,6 +187,25 @@ void Foam::fdm::findNearPairs
     DynamicList<labelPair>& pairs
 )
 {
+    findNearPairs
+    (
+        box, positions, radii, cutoff, from,
+        boolList(positions.size(), true), pairs
+    );
+}
+
+
+void Foam::fdm::findNearPairs
+(
+    const periodicBox& box,
+    const UList<point>& positions,
+    const UList<scalar>& radii,
+    const scalar cutoff,
+    const labelUList& from,
+    const UList<bool>& among,
+    DynamicList<labelPair>& pairs
+)
+{
     pairs.clear();
     const label n = positions.size();
     if (n < 2)
@@ -191,7 +215,7 @@ void Foam::fdm::findNearPairs
     boolList searched(n, false);
     UIndirectList<bool>(searched, from) = true;
 
-    const binGrid grid(box, positions, 2*max(radii) + cutoff);
+    const binGrid grid(box, positions, among, 2*max(radii) + cutoff);
     DynamicList<label> neighbourBins(27);
     for (const label p : from)
     {

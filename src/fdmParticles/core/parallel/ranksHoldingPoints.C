@@ -14,13 +14,18 @@ Foam::labelList Foam::fdm::ranksHoldingPoints
     const pointField& points,
     const pointField& cellCentres,
     const pointBins& cellBins,
-    const scalar delta
+    const scalar delta,
+    const UList<bool>& candidates
 )
 {
     labelList rank(points.size(), -1);
     DynamicList<label> near;
     forAll(points, p)
     {
+        if (candidates.size() && !candidates[p])
+        {
+            continue;
+        }
         // A cube of side delta holds the point when no coordinate is more
         // than delta/2 from its centre (a hair more: a point on a face)
         near.clear();

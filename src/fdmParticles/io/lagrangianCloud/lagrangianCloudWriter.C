@@ -12,7 +12,8 @@ Foam::lagrangianCloudWriter::lagrangianCloudWriter
 (
     const fvMesh& mesh,
     const word& cloudName,
-    const UList<point>& positions
+    const UList<point>& positions,
+    const UList<bool>& candidates
 )
 :
     mesh_(mesh),
@@ -28,7 +29,12 @@ Foam::lagrangianCloudWriter::lagrangianCloudWriter
     DynamicList<label> owned(positions.size());
     forAll(positions, i)
     {
-        if (mesh.nCells() == 0 || !bounds.contains(positions[i]))
+        if
+        (
+            mesh.nCells() == 0
+         || (candidates.size() && !candidates[i])
+         || !bounds.contains(positions[i])
+        )
         {
             continue;
         }

@@ -42,6 +42,19 @@ Foam::fdm::couplingStencils::images(const periodicBox& box)
 }
 
 
+Foam::List<Foam::vector>
+Foam::fdm::couplingStencils::imageShifts(const periodicBox& box)
+{
+    const List<image> all(images(box));
+    List<vector> shifts(all.size());
+    forAll(all, i)
+    {
+        shifts[i] = all[i].shift;
+    }
+    return shifts;
+}
+
+
 void Foam::fdm::couplingStencils::build
 (
     const pointField& cellCentres,
@@ -50,7 +63,8 @@ void Foam::fdm::couplingStencils::build
     const scalarField& radii,
     const indicatorFunctions& indicator,
     const periodicBox& box,
-    const bool consistentOverlaps
+    const bool consistentOverlaps,
+    const UList<bool>& held
 )
 {
     start_.setSize(positions.size() + 1);
@@ -67,6 +81,10 @@ void Foam::fdm::couplingStencils::build
     forAll(positions, p)
     {
         start_[p] = cell_.size();
+        if (held.size() && !held[p])
+        {
+            continue;
+        }
         const scalar a = radii[p];
         const scalar R = indicator.supportRadius(a);
 

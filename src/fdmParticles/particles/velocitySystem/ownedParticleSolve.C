@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ownedParticleSolve.H"
-#include "sumOverRanks.H"
+#include "Pstream.H"
 #include "PstreamReduceOps.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
@@ -91,24 +91,13 @@ Foam::fdm::ownedParticleSolve::solve
     const particleVelocitySystem::solveInfo info =
         system_->solve(tolerance, maxIterations, u, w, residualScale);
 
-    // Every particle's velocities from its owner (the others add zero)
-    List<scalar> all(6*U.size(), Zero);
     forAll(local, p)
     {
         if (local[p] >= 0 && local[p] < system_->nOwned())
         {
-            for (direction d = 0; d < 3; ++d)
-            {
-                all[6*p + d] = u[local[p]][d];
-                all[6*p + 3 + d] = w[local[p]][d];
-            }
+            U[p] = u[local[p]];
+            Omega[p] = w[local[p]];
         }
-    }
-    sumOverRanks(all);
-    forAll(U, p)
-    {
-        U[p] = vector(all[6*p], all[6*p + 1], all[6*p + 2]);
-        Omega[p] = vector(all[6*p + 3], all[6*p + 4], all[6*p + 5]);
     }
     return info;
 }
