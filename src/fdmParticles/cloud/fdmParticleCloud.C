@@ -249,6 +249,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     historyDeltaT_(0),
     firstSolveDone_(false),
     verbose_(true),
+    gatheredTimeIndex_(-1),
     system_(0),
     distributedSolve_(false),
     contacts_(new noContacts(0)),

@@ -94,6 +94,14 @@ void Foam::fdmParticleCloud::checkMotionResolved(const scalar deltaT) const
 
 void Foam::fdmParticleCloud::gatherOnMaster()
 {
+    // Once per time step: the time series, VTK and restart writers may all
+    // write the same step
+    const label timeIndex = mesh_.time().timeIndex();
+    if (timeIndex == gatheredTimeIndex_)
+    {
+        return;
+    }
+    gatheredTimeIndex_ = timeIndex;
     halo_.gatherOnMaster
     (
         state_.position, state_.U, state_.Omega, state_.Uold,

@@ -130,8 +130,7 @@ void Foam::fdmParticleCloud::updatePairs()
         fdm::findNearPairs
         (
             box_, state_.position, state_.radius, reach,
-            findIndices(halo_.owner(), Pstream::myProcNo()), halo_.held(),
-            near_
+            halo_.owned(), halo_.held(), near_
         );
     }
     else

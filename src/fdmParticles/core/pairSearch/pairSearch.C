@@ -81,7 +81,7 @@ public:
         head_.setSize(nBins_[0]*nBins_[1]*nBins_[2], -1);
         forAll(positions, p)
         {
-            if (!among[p])
+            if (among.size() && !among[p])
             {
                 continue;
             }
@@ -189,8 +189,7 @@ void Foam::fdm::findNearPairs
 {
     findNearPairs
     (
-        box, positions, radii, cutoff, from,
-        boolList(positions.size(), true), pairs
+        box, positions, radii, cutoff, from, UList<bool>::null(), pairs
     );
 }
 

@@ -9,12 +9,6 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-Foam::labelList Foam::fdm::particleHalo::owned() const
-{
-    return findIndices(owner_, Pstream::myProcNo());
-}
-
-
 bool Foam::fdm::particleHalo::reaches
 (
     const label r,
@@ -76,30 +70,26 @@ void Foam::fdm::particleHalo::setOwners
     }
     owner_ = owner;
     const label me = Pstream::myProcNo();
-    const labelList mine(owned());
+    owned_ = findIndices(owner_, me);
     forAll(held_, p)
     {
         held_[p] =
             owner_[p] == me
          || (held_[p] && reaches(me, p, positions[p], shifts));
     }
-    ghostRanks_.setSize(owner_.size());
-    for (labelList& ranks : ghostRanks_)
-    {
-        ranks.clear();
-    }
     const List<labelList> ranks
     (
         ranksWithinReach
         (
-            pointField(UIndirectList<point>(positions, mine)),
-            scalarField(UIndirectList<scalar>(reach_, mine)),
+            pointField(UIndirectList<point>(positions, owned_)),
+            scalarField(UIndirectList<scalar>(reach_, owned_)),
             rankBoxes_, shifts, me
         )
     );
-    forAll(mine, i)
+    ghostRanks_ = List<labelList>(owner_.size());
+    forAll(owned_, i)
     {
-        ghostRanks_[mine[i]] = ranks[i];
+        ghostRanks_[owned_[i]] = ranks[i];
     }
 }
 
@@ -115,14 +105,13 @@ void Foam::fdm::particleHalo::sendMoved
         return;
     }
     const label me = Pstream::myProcNo();
-    const labelList mine(owned());
     // An owner keeps its own particles in its lists (they reach its box
     // unless a step moved one further than its reach, which
     // fdmParticleCloud::buildStencils reports); the other ranks hold what
     // they receive
     List<DynamicList<label>> to(rankBoxes_.size());
     held_ = false;
-    for (const label p : mine)
+    for (const label p : owned_)
     {
         held_[p] = true;
         forAll(rankBoxes_, r)
@@ -133,26 +122,11 @@ void Foam::fdm::particleHalo::sendMoved
             }
         }
     }
-    exchangeWithRanks
+    const labelList received
     (
-        [&](const label r, Ostream& os)
-        {
-            os << labelList(to[r]);
-            haloIO::writeSelected(os, to[r], s.position);
-            haloIO::writeSelected(os, to[r], s.U);
-            haloIO::writeSelected(os, to[r], s.Omega);
-            haloIO::writeSelected(os, to[r], s.Uold);
-        },
-        [&](const label, Istream& is)
-        {
-            const labelList received(is);
-            haloIO::readSelected(is, received, s.position);
-            haloIO::readSelected(is, received, s.U);
-            haloIO::readSelected(is, received, s.Omega);
-            haloIO::readSelected(is, received, s.Uold);
-            UIndirectList<bool>(held_, received) = true;
-        }
+        sendEntries(to, s.position, s.U, s.Omega, s.Uold)
     );
+    UIndirectList<bool>(held_, received) = true;
 }
 
 
@@ -162,13 +136,13 @@ void Foam::fdm::particleHalo::report() const
     {
         return;
     }
-    const label owned = this->owned().size();
-    const label held = findIndices(held_, true).size();
+    const label nOwned = owned_.size();
+    const label nHeld = findIndices(held_, true).size();
     Info<< "    By subdomain: a rank owns "
-        << returnReduce(owned, minOp<label>()) << " to "
-        << returnReduce(owned, maxOp<label>()) << " particles and holds "
-        << returnReduce(held, minOp<label>()) << " to "
-        << returnReduce(held, maxOp<label>()) << " of " << held_.size()
+        << returnReduce(nOwned, minOp<label>()) << " to "
+        << returnReduce(nOwned, maxOp<label>()) << " particles and holds "
+        << returnReduce(nHeld, minOp<label>()) << " to "
+        << returnReduce(nHeld, maxOp<label>()) << " of " << held_.size()
         << " (its own and their ghosts)" << endl;
 }
 
@@ -179,33 +153,19 @@ void Foam::fdm::particleHalo::sendToGhosts
     List<vector>& b
 ) const
 {
-    if (!distributed() || !Pstream::parRun())
+    if (!distributed())
     {
         return;
     }
-    List<DynamicList<label>> to(Pstream::nProcs());
-    forAll(ghostRanks_, p)
+    List<DynamicList<label>> to(rankBoxes_.size());
+    for (const label p : owned_)
     {
         for (const label r : ghostRanks_[p])
         {
             to[r].append(p);
         }
     }
-    exchangeWithRanks
-    (
-        [&](const label r, Ostream& os)
-        {
-            os << labelList(to[r]);
-            haloIO::writeSelected(os, to[r], a);
-            haloIO::writeSelected(os, to[r], b);
-        },
-        [&](const label, Istream& is)
-        {
-            const labelList received(is);
-            haloIO::readSelected(is, received, a);
-            haloIO::readSelected(is, received, b);
-        }
-    );
+    sendEntries(to, a, b);
 }
 
 

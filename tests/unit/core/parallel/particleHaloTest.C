@@ -8,20 +8,13 @@
 
 #include "particleHalo.H"
 
+#include "twoRankBoxes.H"
+
 #include <gtest/gtest.h>
 
 using namespace Foam;
 
-namespace
-{
-
-const List<boundBox> halves
-({
-    boundBox(point(0, 0, 0), point(2, 2, 2)),
-    boundBox(point(2, 0, 0), point(4, 2, 2))
-});
-
-} // namespace
+const List<boundBox> halves(unitTest::twoRankBoxes());
 
 
 TEST(particleHalo, replicatedHoldsEveryParticle)

@@ -5,20 +5,13 @@
 
 #include "ranksWithinReach.H"
 
+#include "twoRankBoxes.H"
+
 #include <gtest/gtest.h>
 
 using namespace Foam;
 
-namespace
-{
-
-const List<boundBox> halves
-({
-    boundBox(point(0, 0, 0), point(2, 2, 2)),
-    boundBox(point(2, 0, 0), point(4, 2, 2))
-});
-
-} // namespace
+const List<boundBox> halves(unitTest::twoRankBoxes());
 
 
 TEST(ranksWithinReach, distanceToABox)
