@@ -12,6 +12,7 @@ Directions are periodic or bounded by walls at the box faces.
 """
 
 import numpy as np
+from scipy.spatial import cKDTree
 
 
 def bidisperse_counts(volume, phi, a1=1.0, ratio=1.4):
@@ -43,21 +44,26 @@ class Box:
 
 
 def _pairs(x, r, box, skin):
-    """Candidate pairs (i < j) with surface gap below skin: O(N^2) in
-    chunks, enough for the few thousand spheres of a resolved case."""
-    n = len(x)
-    I, J = [], []
-    chunk = max(1, 4_000_000 // max(n, 1))
-    for s in range(0, n, chunk):
-        i = np.arange(s, min(n, s + chunk))
-        d = box.image(x[None, :, :] - x[i, None, :])
-        dist = np.sqrt((d**2).sum(-1))
-        near = (dist < r[i, None] + r[None, :] + skin) & (
-            np.arange(n)[None, :] > i[:, None])
-        ii, jj = np.nonzero(near)
-        I.append(i[ii])
-        J.append(jj)
-    return np.concatenate(I), np.concatenate(J)
+    """Pairs (i < j, sorted by i then j) with surface gap below skin: the
+    candidates within the largest pair's reach from SciPy's k-d tree
+    (periodic axes as its box, walled ones padded so that nothing wraps),
+    then the gap test on the minimum image."""
+    if len(x) < 2:
+        return np.zeros(0, int), np.zeros(0, int)
+    reach = 2 * r.max() + skin
+    p = box.periodic
+    u = x - np.where(p, box.lo, x.min(axis=0))
+    periodic = np.mod(u[:, p], box.span[p])
+    periodic[periodic >= box.span[p]] = 0.0    # mod's rounding up
+    u[:, p] = periodic
+    size = np.where(p, box.span, u.max(axis=0) + 2 * reach + 1)
+    ij = cKDTree(u, boxsize=size).query_pairs(reach * (1 + 1e-9),
+                                                output_type="ndarray")
+    ij = ij[np.lexsort((ij[:, 1], ij[:, 0]))]
+    I, J = ij[:, 0], ij[:, 1]
+    d = box.image(x[J] - x[I])
+    near = np.sqrt((d**2).sum(-1)) < r[I] + r[J] + skin
+    return I[near], J[near]
 
 
 def _relax(x, r, box, gap, iters, tol, free):
