@@ -7,9 +7,8 @@ import unittest
 import numpy as np
 
 from fdmPost.rheology import slab_volume
-from fdmPre.packing import (Box, bidisperse_counts, min_clearance, pack,
-                            row_layer,
-                            volume_fraction, wall_layer)
+from fdmPre.packing import (Box, _pairs, bidisperse_counts, min_clearance,
+                            pack, row_layer, volume_fraction, wall_layer)
 
 
 class BidisperseCounts(unittest.TestCase):
@@ -116,6 +115,34 @@ class Stratified(unittest.TestCase):
         box = Box([0, 0, 0], [8, 8, 8], [True, True, True])
         with self.assertRaises(ValueError):
             pack(box, np.ones(10), stratify=1)
+
+
+class NearPairs(unittest.TestCase):
+    def test_the_pairs_within_the_gap_in_order(self):
+        # Against every pair on the minimum image (i < j, by i then j),
+        # with points on a periodic face and beyond a wall
+        rng = np.random.default_rng(5)
+        for periodic in ([True, False, True], [True] * 3, [False] * 3):
+            box = Box([-1, 2, 0.5], [7, 6, 9], periodic)
+            x = box.lo + rng.random((300, 3)) * box.span
+            x[:3] = box.lo + box.span * [1, 0.5, 1 - 1e-15]
+            x[3:6, 1] += 0.4
+            r = rng.uniform(0.3, 0.9, len(x))
+            d = x[None, :, :] - x[:, None, :]
+            p = box.periodic
+            d[..., p] -= box.span[p] * np.round(d[..., p] / box.span[p])
+            gap = np.sqrt((d**2).sum(-1)) - r[:, None] - r[None, :]
+            expect = np.nonzero(np.triu(gap < 0.4, 1))
+            got = _pairs(x.copy(), r, box, 0.4)
+            self.assertGreater(len(expect[0]), 100)
+            for e, g in zip(expect, got):
+                np.testing.assert_array_equal(g, e)
+
+    def test_fewer_than_two_spheres(self):
+        box = Box([0, 0, 0], [4, 4, 4], [True] * 3)
+        for n in (0, 1):
+            I, J = _pairs(np.ones((n, 3)), np.ones(n), box, 0.5)
+            self.assertEqual((len(I), len(J)), (0, 0))
 
 
 if __name__ == "__main__":
