@@ -14,13 +14,16 @@ are for Delta = a/4 .. a/6) and the indicator work per particle is
 (5/2)^3 times smaller than at the thesis' a/5: this measures how the
 particle work grows with N and ranks, not the cost of a production step.
 Every step is solved to a lambda residual of 1e-3; the cost per step is
-that of steps 2 .. --steps (the first pays the set-up and the initial
-solve).  The domain is cut into slabs along x, one per rank.  Ranks beyond
+that of steps 2 .. --steps - 1 (the first pays the set-up and the initial
+solve, the last writes the fields, the cloud and the restart state).  The domain is cut into slabs along x, one per rank.  Ranks beyond
 the cores share them: their wall times are then upper bounds.
 
-    inSolver.py [--sizes 1000,10000] [--ranks 1,2,4] [--steps 3]
+    inSolver.py [--sizes 1000,10000] [--ranks 1,2,4] [--steps 4]
+                [--record] [--report inSolver.md]
 
-writes inSolver.md here (cases in build/benchmarks/particleDistribution).
+writes the report here (cases in build/benchmarks/particleDistribution).
+--record writes the particle time series (particles.h5) at every
+step, so that the output column holds the master's gather and write.
 """
 
 import argparse
@@ -42,6 +45,7 @@ from fdmPost.caseRunner import (TIMING_COLUMNS, copy_case,  # noqa: E402
 
 PARTS = ("flow", "indicators", "integrals", "particleSolve", "corrections",
          "pairs", "acceleration")
+SHOWN = PARTS + ("output",)
 
 
 def box_side(n):
@@ -70,7 +74,6 @@ def base_case(work, n):
     for key in ("lambdaTolerance", "lambdaToleranceFirstStep",
                 "lambdaToleranceBetweenRecords"):
         foam_set(case, "coupling." + key, TOL, props)
-    foam_set(case, "output.timeSeriesInterval", 1000, props)
     foam_set(case, "deltaT", DT, "system/controlDict")
     foam_set(case, "writeInterval", 1000, "system/controlDict")
     foam_set(case, "functions", "{}", "system/controlDict")
@@ -82,10 +85,12 @@ def base_case(work, n):
     return case
 
 
-def run_point(base, scheme, ranks, steps):
+def run_point(base, scheme, ranks, steps, record):
     """One run of steps steps; its per-step costs and peak memory."""
     case = "%s_%s_%d" % (base, scheme, ranks)
     copy_case(base, case)
+    foam_set(case, "output.timeSeriesInterval", 1 if record else 1000,
+             "constant/particleProperties")
     foam_set(case, "coupling.parallelParticleSolve", scheme,
              "constant/particleProperties")
     foam_set(case, "endTime", steps * DT, "system/controlDict")
@@ -93,7 +98,7 @@ def run_point(base, scheme, ranks, steps):
                               "log.fdmSuspensionFoam")
     log = open(os.path.join(case, "log.fdmSuspensionFoam")).read()
     timing = timing_lines(log)
-    first, last = (dict(zip(TIMING_COLUMNS, timing[i])) for i in (0, -1))
+    first, last = (dict(zip(TIMING_COLUMNS, timing[i])) for i in (0, -2))
     n = last["steps"] - first["steps"]
     per = {k: (last[k] - first[k]) / n for k in TIMING_COLUMNS}
     per["other"] = per["total"] - sum(per[k] for k in PARTS + ("output",))
@@ -105,14 +110,14 @@ def run_point(base, scheme, ranks, steps):
 
 def table(rows):
     head = ("| N | scheme | ranks | s/step | outer/step | "
-            + " | ".join(PARTS) + " | other | peak MiB/rank |")
+            + " | ".join(SHOWN) + " | other | peak MiB/rank |")
     lines = [head, "|" + "---|" * (head.count("|") - 1)]
     for r in rows:
         lines.append(
             "| %d | %s | %d | %.3f | %.1f | " % (
                 r["particles"], r["scheme"], r["ranks"], r["total"],
                 r["outer"])
-            + " | ".join("%.4f" % r[k] for k in PARTS)
+            + " | ".join("%.4f" % r[k] for k in SHOWN)
             + " | %.4f | %.0f |" % (r["other"], r["peakMiB"]))
     return lines
 
@@ -121,7 +126,9 @@ def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--sizes", default="1000,10000")
     parser.add_argument("--ranks", default="1,2,4")
-    parser.add_argument("--steps", type=int, default=3)
+    parser.add_argument("--steps", type=int, default=4)
+    parser.add_argument("--record", action="store_true")
+    parser.add_argument("--report", default="inSolver.md")
     args = parser.parse_args()
     work = os.path.join(PROJECT, "build", "benchmarks",
                         "particleDistribution")
@@ -131,24 +138,25 @@ def main():
         base = base_case(work, n)
         for ranks in (int(r) for r in args.ranks.split(",")):
             for scheme in ("replicated", "distributed")[:1 + (ranks > 1)]:
-                r = run_point(base, scheme, ranks, args.steps)
+                r = run_point(base, scheme, ranks, args.steps, args.record)
                 r.update(scheme=scheme, ranks=ranks)
                 rows.append(r)
                 print(table([r])[-1], flush=True)
     lines = [
         "# Particle work in the solver, replicated against by subdomain",
         "",
-        "`inSolver.py --sizes %s --ranks %s --steps %d` on %s (%d cores): "
+        "`inSolver.py %s` on %s (%d cores): "
         "Couette, monodisperse a = 1, phi %g, Delta = a/%d, hertz contacts, "
         "no sub-grid, lambda residual %g, gammaDot dt %g; wall seconds per "
         "step over steps 2 .. %d, the columns of the solver's Timing report "
         "(flow: the SIMPLEC solves; acceleration: the outer iteration's "
-        "Anderson step; other: the move, state copies, logging). Ranks "
-        "beyond the cores share them." % (
-            args.sizes, args.ranks, args.steps, os.uname().nodename,
-            os.cpu_count(), PHI, CELLS_PER_A, TOL, DT, args.steps),
+        "Anderson step; output: the time series, gathered on the master "
+        "and written, at every step with --record; other: the move, state "
+        "copies, logging). Ranks beyond the cores share them." % (
+            " ".join(sys.argv[1:]), os.uname().nodename,
+            os.cpu_count(), PHI, CELLS_PER_A, TOL, DT, args.steps - 1),
         ""] + table(rows)
-    open(os.path.join(HERE, "inSolver.md"), "w").write("\n".join(lines) + "\n")
+    open(os.path.join(HERE, args.report), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
     lock.close()
 

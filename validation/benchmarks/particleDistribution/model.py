@@ -10,7 +10,9 @@ as it is now ("now", fdm::particleHalo): owned by subdomain, but each
 rank's particle lists are indexed by every particle (only the entries of
 its own and its ghosts current), the owners are agreed by a reduction of
 one label per particle and step, each step scans those lists a few times,
-and every exchange sends its sizes to all ranks (PstreamBuffers).
+every exchange sends its sizes to all ranks (PstreamBuffers), and the
+owners send their particles' records to the master, which writes the time
+series (particles.h5) alone.
 
 The particle-side constants are measured here: the per-particle time of
 pair search, assembly and solve and the memory per particle come from the
@@ -21,7 +23,7 @@ couetteCost: 799 core-s per strain over 250 steps at 10^6 cells, 2.0-2.3
 GiB).  The network and the counts per step are assumptions, stated in
 ASSUMPTIONS and printed with the tables.
 
-    model.py [--system REPORT]          (prints the report)
+    model.py [--system REPORT] [--solver inSolver.md]   (prints the report)
 """
 
 import argparse
@@ -62,6 +64,14 @@ ASSUMPTIONS = {
     "scanSeconds": 5e-8,
     "fixedExchanges": 5,
     "exchangesPerOuter": 2,
+    # Output: a time series record every 40 steps (0.16 strain at gammaDot
+    # deltaT 4e-3, thesisSweep/runPoint), gathered on the master (position,
+    # velocities, Adams-Bashforth history, hydrodynamic and contact loads:
+    # 37 scalars per particle) and written by it; the write per particle
+    # and record measured serially (read_write_seconds: inSolver.md's
+    # output column). The owned scheme writes each rank's particles.
+    "recordSteps": 40,
+    "recordScalars": 37,
     # Network: latency per message and bandwidth per rank (an InfiniBand
     # cluster of the thesis' kind)
     "latency": 2e-6,
@@ -85,6 +95,24 @@ def read_system_report(path):
                          " the peak-memory column (run"
                          " ../particleSystemScaling/Allrun)")
     return rows
+
+
+def read_write_seconds(path):
+    """Seconds per particle of the master's write of one record: the
+    output column of inSolver.md (run with --record) over the particles,
+    at its largest serial size."""
+    text = open(path).read()
+    if "--record" not in text:
+        raise SystemExit(f"model.py: {path} was not run with --record (run"
+                         " inSolver.py --record)")
+    serial = []
+    for line in text.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) >= 15 and re.fullmatch(r"\d+", cells[0]) \
+                and cells[2] == "1":
+            serial.append((int(cells[0]), float(cells[12])))
+    n, seconds = max(serial)
+    return seconds / n
 
 
 def particle_constants(rows):
@@ -115,6 +143,17 @@ def tree_sum(n_scalars, p, c):
         2 * whole
 
 
+def output_seconds(n, p, c, gathered):
+    """Seconds per step of the time series: the records of n particles
+    written by one rank (gathered on it from p ranks when gathered), every
+    recordSteps steps.  The other ranks wait for it at the next reduction."""
+    seconds = n * c["writeSeconds"]
+    if gathered and p > 1:
+        seconds += ((p - 1) * c["latency"]
+                    + n * c["recordScalars"] * 8 / c["bandwidth"])
+    return seconds / c["recordSteps"]
+
+
 def now(n, p, c, k):
     """Memory [GiB], time per step [s] and bytes sent per step of one rank
     of the solver's parallelParticleSolve distributed as it is now: the
@@ -122,7 +161,9 @@ def now(n, p, c, k):
     owners' reduction and the sizes of each exchange sent to every rank."""
     memory, seconds, sent = per_rank(n, p, c, k, owned=True)
     memory += n * c["listBytes"] / 2**30
-    seconds += n * c["scanSeconds"]
+    # The master writes every particle's record, not each rank its own
+    seconds += (n * c["scanSeconds"] + output_seconds(n, p, c, True)
+                - output_seconds(n / p, 1, c, False))
     if p > 1:
         owners = tree_sum(n / 2, p, c)          # 4-byte labels
         exchanges = (c["fixedExchanges"]
@@ -159,7 +200,8 @@ def per_rank(n, p, c, k, owned):
         seconds, sent = tree_sum(n * c["integralScalars"], p, c)
         comm, sent = outer * seconds, outer * sent
     memory = (cells * c["cellBytes"] + held * k["bytes"]) / 2**30
-    return memory, compute + comm, sent
+    output = output_seconds(n / p if owned else n, p, c, False)
+    return memory, compute + comm + output, sent
 
 
 def table(title, header, rows):
@@ -197,15 +239,29 @@ def weak_rows(c, k):
     return rows
 
 
-def report(system_path):
-    c = ASSUMPTIONS
+def output_rows(c, k):
+    rows = []
+    for n in (1e4, 1e5, 1e6, 1e7):
+        p = max(1, round(n / c["particlesPerCore"]))
+        step = now(n, p, c, k)[1]
+        gathered = output_seconds(n, p, c, True)
+        rows.append([f"{n:.0e}", str(p), f"{step:.3g}", f"{gathered:.3g}",
+                     f"{100 * gathered / step:.2g}",
+                     f"{output_seconds(n / p, 1, c, False):.2g}"])
+    return rows
+
+
+def report(system_path, solver_path):
+    c = dict(ASSUMPTIONS, writeSeconds=read_write_seconds(solver_path))
     k = particle_constants(read_system_report(system_path))
     lines = ["# Particles by subdomain: the replicated scheme's cost and"
              " the owned scheme's model (issue 38)", "",
              f"Measured particle constants ({os.path.relpath(system_path)}):"
              f" {k['setup'] * 1e6:.1f} us per particle for search and"
              f" assembly, {k['solve'] * 1e6:.1f} us per particle per"
-             f" factorised solve, {k['bytes'] / 1024:.1f} KiB per particle.",
+             f" factorised solve, {k['bytes'] / 1024:.1f} KiB per particle;"
+             f" {c['writeSeconds'] * 1e6:.2f} us per particle for a record"
+             f" written ({os.path.relpath(solver_path)}).",
              "", "Assumptions: " + ", ".join(f"{key} {v:.4g}"
                                              for key, v in c.items()), ""]
     lines += table(
@@ -220,6 +276,12 @@ def report(system_path):
         f" ({c['particlesPerCore']:.1f})",
         ["N", "ranks", "GiB replicated", "GiB now", "GiB owned",
          "s replicated", "s now", "s owned"], weak_rows(c, k))
+    lines += table(
+        "The time series gathered on the master (now), weak scaling: its"
+        " share of a step, against each rank writing its own particles",
+        ["N", "ranks", "s per step now", "s per step of output now",
+         "% of the step", "s per step of output, per-rank writes"],
+        output_rows(c, k))
     return "\n".join(lines)
 
 
@@ -228,8 +290,9 @@ def main():
                                  formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--system", default=os.path.join(
         HERE, "..", "particleSystemScaling", "report.md"))
+    ap.add_argument("--solver", default=os.path.join(HERE, "inSolver.md"))
     args = ap.parse_args()
-    print(report(args.system))
+    print(report(args.system, args.solver))
 
 
 if __name__ == "__main__":
