@@ -6,20 +6,22 @@ particle system solved whole on every rank (parallelParticleSolve
 replicated) and by subdomain (distributed).
 
 The case is tutorials/couette at a larger size: monodisperse spheres
-(a = 1) at phi 0.3 between walls moving at +-L/2 (shear rate 1), packed by
-fdmPackParticles (seed 1) in an L^3 box with L from N, hertz contacts as
-in the tutorial.  Delta = a/2 keeps the fluid affordable at 10^4
-particles on this machine, so there is no sub-grid lubrication (its tables
-are for Delta = a/4 .. a/6) and the indicator work per particle is
-(5/2)^3 times smaller than at the thesis' a/5: this measures how the
-particle work grows with N and ranks, not the cost of a production step.
-Every step is solved to a lambda residual of 1e-3; the cost per step is
-that of steps 2 .. --steps - 1 (the first pays the set-up and the initial
-solve, the last writes the fields, the cloud and the restart state).  The domain is cut into slabs along x, one per rank.  Ranks beyond
-the cores share them: their wall times are then upper bounds.
+(a = 1) at phi 0.3 (--phi) between walls moving at +-L/2 (shear rate 1),
+packed by fdmPackParticles (seed 1) in an L^3 box with L from N, hertz
+contacts as in the tutorial.  Delta = a/2 keeps the fluid affordable at
+3 10^4 particles on this machine (10^5 at phi 0.5: 6.6e6 cells), so there
+is no sub-grid lubrication (its tables are for Delta = a/4 .. a/6) and
+the indicator work per particle is (5/2)^3 times smaller than at the
+thesis' a/5: this measures how the particle work grows with N and ranks,
+not the cost of a production step.  Every step is solved to a lambda
+residual of 1e-3; the cost per step is that of steps 2 .. --steps - 1
+(the first pays the set-up and the initial solve, the last writes the
+fields, the cloud and the restart state).  The domain is cut into slabs
+along x, one per rank.  Ranks beyond the cores share them: their wall
+times are then upper bounds.
 
     inSolver.py [--sizes 1000,10000] [--ranks 1,2,4] [--steps 4]
-                [--record] [--report inSolver.md]
+                [--phi 0.3] [--record] [--report inSolver.md]
 
 writes the report here (cases in build/benchmarks/particleDistribution).
 --record writes the particle time series (particles.h5) at every
@@ -37,7 +39,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 PROJECT = os.environ["FDM_PROJECT_DIR"]
 TUTORIAL = os.path.join(PROJECT, "tutorials", "couette")
-PHI, CELLS_PER_A, DT, TOL = 0.3, 2, 4e-3, 1e-3
+CELLS_PER_A, DT, TOL = 2, 4e-3, 1e-3
 sys.path.insert(0, os.path.join(PROJECT, "src", "python"))
 from fdmPost.caseRunner import (TIMING_COLUMNS, copy_case,  # noqa: E402
                                 foam_set, run_logged, run_measured,
@@ -48,18 +50,19 @@ PARTS = ("flow", "indicators", "integrals", "particleSolve", "corrections",
 SHOWN = PARTS + ("output",)
 
 
-def box_side(n):
-    """The box edge [a] holding n unit spheres at PHI."""
-    return int(round((n * 4.0 / 3.0 * np.pi / PHI) ** (1.0 / 3.0)))
+def box_side(n, phi):
+    """The box edge [a] holding n unit spheres at phi."""
+    return int(round((n * 4.0 / 3.0 * np.pi / phi) ** (1.0 / 3.0)))
 
 
-def base_case(work, n):
+def base_case(work, n, phi):
     """The packed and meshed case of about n particles, run by none."""
-    case = os.path.join(work, "N%d" % n)
+    case = os.path.join(work, "N%d" % n + ("" if phi == 0.3 else
+                                           "_phi%g" % phi))
     if os.path.isfile(os.path.join(case, "constant", "polyMesh", "owner")):
         return case
     copy_case(TUTORIAL, case)
-    L = box_side(n)
+    L = box_side(n, phi)
     mesh = os.path.join(case, "system", "blockMeshDict")
     text = open(mesh).read()
     for k, v in (("Lx", L), ("Ly", L), ("Lz", L)) + tuple(
@@ -78,7 +81,7 @@ def base_case(work, n):
     foam_set(case, "writeInterval", 1000, "system/controlDict")
     foam_set(case, "functions", "{}", "system/controlDict")
     run_logged(["fdmPackParticles", "--box", str(L), str(L), str(L),
-                "--walls", "y", "--phi", str(PHI), "--ratio", "1",
+                "--walls", "y", "--phi", str(phi), "--ratio", "1",
                 "--seed", "1", "-o", "constant/particleList"],
                case, "log.fdmPackParticles")
     run_logged(["blockMesh"], case, "log.blockMesh")
@@ -127,6 +130,7 @@ def main():
     parser.add_argument("--sizes", default="1000,10000")
     parser.add_argument("--ranks", default="1,2,4")
     parser.add_argument("--steps", type=int, default=4)
+    parser.add_argument("--phi", type=float, default=0.3)
     parser.add_argument("--record", action="store_true")
     parser.add_argument("--report", default="inSolver.md")
     args = parser.parse_args()
@@ -135,7 +139,7 @@ def main():
     lock = work_lock(work)
     rows = []
     for n in (int(s) for s in args.sizes.split(",")):
-        base = base_case(work, n)
+        base = base_case(work, n, args.phi)
         for ranks in (int(r) for r in args.ranks.split(",")):
             for scheme in ("replicated", "distributed")[:1 + (ranks > 1)]:
                 r = run_point(base, scheme, ranks, args.steps, args.record)
@@ -154,7 +158,7 @@ def main():
         "and written, at every step with --record; other: the move, state "
         "copies, logging). Ranks beyond the cores share them." % (
             " ".join(sys.argv[1:]), os.uname().nodename,
-            os.cpu_count(), PHI, CELLS_PER_A, TOL, DT, args.steps - 1),
+            os.cpu_count(), args.phi, CELLS_PER_A, TOL, DT, args.steps - 1),
         ""] + table(rows)
     open(os.path.join(HERE, args.report), "w").write("\n".join(lines) + "\n")
     print("\n".join(lines))
