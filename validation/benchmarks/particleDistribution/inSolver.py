@@ -104,7 +104,7 @@ def run_point(base, scheme, ranks, steps, record):
     first, last = (dict(zip(TIMING_COLUMNS, timing[i])) for i in (0, -2))
     n = last["steps"] - first["steps"]
     per = {k: (last[k] - first[k]) / n for k in TIMING_COLUMNS}
-    per["other"] = per["total"] - sum(per[k] for k in PARTS + ("output",))
+    per["other"] = per["total"] - sum(per[k] for k in SHOWN)
     per.update(peakMiB=peak / 1024.0, wall=wall,
                particles=int(re.search(r"(\d+) particles", log).group(1)))
     shutil.rmtree(case, ignore_errors=True)
@@ -134,6 +134,9 @@ def main():
     parser.add_argument("--record", action="store_true")
     parser.add_argument("--report", default="inSolver.md")
     args = parser.parse_args()
+    if args.steps < 3:
+        parser.error("--steps must be at least 3: the first and the last"
+                     " step are not timed")
     work = os.path.join(PROJECT, "build", "benchmarks",
                         "particleDistribution")
     lock = work_lock(work)
