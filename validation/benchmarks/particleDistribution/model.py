@@ -79,17 +79,20 @@ ASSUMPTIONS = {
 }
 
 
+def data_rows(text, columns):
+    """The cells of the Markdown table rows of text that have at least
+    columns cells and a count in the first."""
+    for line in text.splitlines():
+        cells = [c.strip() for c in line.strip().strip("|").split("|")]
+        if len(cells) >= columns and re.fullmatch(r"\d+", cells[0]):
+            yield cells
+
+
 def read_system_report(path):
     """Rows (N, search s, assembly s, solve s, peak MiB) of the
     particleSystemScaling table."""
-    rows = []
-    with open(path) as f:
-        for line in f:
-            cells = [c.strip() for c in line.strip().strip("|").split("|")]
-            if len(cells) >= 8 and re.fullmatch(r"\d+", cells[0]):
-                n, search, assembly, solve = (float(cells[k])
-                                              for k in (0, 2, 3, 4))
-                rows.append((n, search, assembly, solve, float(cells[7])))
+    rows = [tuple(float(cells[k]) for k in (0, 2, 3, 4, 7))
+            for cells in data_rows(open(path).read(), 8)]
     if len(rows) < 2:
         raise SystemExit(f"model.py: {path} has fewer than two sizes with"
                          " the peak-memory column (run"
@@ -105,13 +108,8 @@ def read_write_seconds(path):
     if "--record" not in text:
         raise SystemExit(f"model.py: {path} was not run with --record (run"
                          " inSolver.py --record)")
-    serial = []
-    for line in text.splitlines():
-        cells = [c.strip() for c in line.strip().strip("|").split("|")]
-        if len(cells) >= 15 and re.fullmatch(r"\d+", cells[0]) \
-                and cells[2] == "1":
-            serial.append((int(cells[0]), float(cells[12])))
-    n, seconds = max(serial)
+    n, seconds = max((int(cells[0]), float(cells[12]))
+                     for cells in data_rows(text, 15) if cells[2] == "1")
     return seconds / n
 
 
