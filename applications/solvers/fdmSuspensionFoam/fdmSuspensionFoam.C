@@ -52,6 +52,7 @@ Usage
 #include "layerMeanCorrection.H"
 #include "transposeViscousTerm.H"
 #include "shareLeesEdwardsCoupling.H"
+#include "evaluateCoupledPatches.H"
 #include "leesEdwardsShear.H"
 #include "schemeEntries.H"
 #include "heapReuse.H"

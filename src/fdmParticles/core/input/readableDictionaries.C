@@ -9,6 +9,30 @@
 #include "OSspecific.H"
 #include "dictionary.H"
 
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- Read the FoamFile header, if any, and take its format: the data of a
+//  field written in binary follow in binary (as IOobject::readHeader)
+void readHeaderFormat(Foam::Istream& is)
+{
+    Foam::token first(is);
+    if (first.isWord() && first.wordToken() == "FoamFile")
+    {
+        const Foam::dictionary header(is);
+        is.format(header.getOrDefault<Foam::word>("format", "ascii"));
+    }
+    else
+    {
+        is.putBack(first);
+    }
+}
+
+} // End anonymous namespace
+
+
 // * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * * //
 
 const Foam::wordList& Foam::fdm::dictionariesReadAtStart()
@@ -42,6 +66,7 @@ void Foam::fdm::checkDictionariesReadable
         FatalIOError.throwExceptions();
         try
         {
+            readHeaderFormat(is);
             const dictionary dict(is);
         }
         catch (const IOerror& e)

@@ -2,11 +2,13 @@
 // double in a dictionary OpenFOAM reads next stops naming the file, the
 // keyword and what is allowed, with floating-point traps on (where
 // OpenFOAM's reader alone would trap), in the start dictionaries and in
-// the fields; whole dictionaries pass, absent ones are skipped.
+// the fields; whole dictionaries pass, absent ones are skipped, and a
+// field written in binary (writeFormat binary) is read in its format.
 
 #include "readableDictionaries.H"
 #include "unitTestCase.H"
 #include "unitTestHelpers.H"
+#include "volFields.H"
 #include <gtest/gtest.h>
 
 using namespace Foam;
@@ -53,4 +55,36 @@ TEST(readableDictionaries, fieldsOfTheStartTimeAreCheckedTheSameWay)
     });
     EXPECT_NE(msg.find("0/U"), std::string::npos) << msg;
     EXPECT_NE(msg.find("keyword 'internalField'"), std::string::npos) << msg;
+}
+
+
+TEST(readableDictionaries, fieldWrittenInBinaryIsReadInItsFormat)
+{
+    unitTest::scratchCase sc
+    (
+        "readableDictionariesBinary", "writeFormat binary;"
+    );
+    autoPtr<fvMesh> mesh = unitTest::boxMesh
+    (
+        sc.runTime(), labelVector(3, 2, 2), 0.5, unitTest::channelSides()
+    );
+    tmp<volVectorField> tU =
+        unitTest::zeroField<vector>(*mesh, "U", dimVelocity);
+    volVectorField& U = tU.ref();
+    forAll(U, c)
+    {
+        // Bytes of every value, '(' and ')' among them
+        U[c] = vector(0.1*c - 0.3, 1.0/(c + 1), -1e-300*c);
+    }
+    ASSERT_TRUE(U.write());
+    const fileName dir = sc.path()/sc.runTime().timeName();
+    ASSERT_TRUE(isFile(dir/"U"));
+    EXPECT_EQ
+    (
+        unitTest::errorOf([&]
+        {
+            fdm::checkDictionariesReadable(dir, {"U"});
+        }),
+        ""
+    );
 }
