@@ -8,8 +8,9 @@ dictionary lookup (get, getOrDefault, found, subDict, readBounded, ...)
 or in an allowed-keyword list (checkKeywords, the lubricatedDEMFoam block
 lists, the contact law's common keywords) in src/fdmParticles and
 applications/solvers.  Lookups in files the solvers write themselves
-(particleState, the resistance tables) are set apart by the source file
-and the variable they are read from (INTERNAL below).
+(particleState, the resistance tables) and in FoamFile headers are set
+apart by the source file and the variable they are read from (INTERNAL
+below).
 
 Each keyword is attributed to the solver(s) reading it by its source path:
 lubricatedDEMFoam (dem/, the solver), fdmSuspensionFoam (everything else),
@@ -55,8 +56,11 @@ OPTION_PY = re.compile(
     r"add_argument\(\s*\"(-[\w-]+)\"(?:\s*,\s*\"(--[\w-]+)\")?")
 
 # (source file, variable) of lookups in files the solvers write: the
-# particleState of both solvers and the resistance tables
+# particleState of both solvers and the resistance tables; and in the
+# FoamFile header of any file (its format, read for the check of the
+# start fields)
 INTERNAL = {
+    ("src/fdmParticles/core/input/readableDictionaries.C", "header"),
     ("src/fdmParticles/cloud/fdmParticleCloudInput.C", "state"),
     ("src/fdmParticles/contact/particleContactsIO.C", "state"),
     ("src/fdmParticles/functionObjects/suspensionStress/suspensionStress.C",
