@@ -17,8 +17,8 @@ References and tolerances:
   velocity within 3 %, as in periodicArrayDrag.
 - Restarted on a new decomposition (reconstructPar, decomposePar): the
   uninterrupted 2-rank run to 1e-12 relative at 1.2 and 1.4 (round-off:
-  positions and velocities are read at full precision, the fields at 17
-  digits; the processorCyclic values decomposePar writes are not used).
+  positions and velocities are read at full precision, the fields in
+  binary; the processorCyclic values decomposePar writes are not used).
 - The path is what the test is for: it starts left of x = 2.5 and ends past
   the cyclic patch, unwrapped displacement over 2.95a.
 """
@@ -81,7 +81,7 @@ for key in ("velocity", "angularVelocity"):
 
 # Restarted after reconstructPar and decomposePar at time 1: the records
 # of 1.2 and 1.4 against the uninterrupted run's, to round-off (the state
-# is read at full precision, the fields at 17 digits)
+# is read at full precision, the fields in binary)
 again = trajectory("redecomposed")
 for t in (1.2, 1.4):
     i = np.argmin(abs(two["time"] - t))

@@ -10,8 +10,8 @@
 # 2 ranks with the system solved whole on every rank the trajectory is the
 # distributed one to the last printed digit: 3e-8 from the serial one.)
 # A restart that goes through reconstructPar and decomposePar (as when a
-# run moves to another decomposition): the 2-rank run stopped at time 1
-# (written at 17 digits), reconstructed, its processor directories removed
+# run moves to another decomposition): the 2-rank run by subdomain stopped
+# at time 1 (the fields in binary), reconstructed, its processor directories removed
 # and decomposed again, continued for two steps, must follow the
 # uninterrupted 2-rank run to round-off: decomposePar writes the cyclic's
 # face values on the processorCyclic patch, not the neighbour cells' that
@@ -46,11 +46,9 @@ cp -r "$work/distributed" "$work/redecomposed"
 runBySubdomain "$work/distributed" || exit 1
 (
     cd "$work/redecomposed" || exit 1
-    for entry in "writePrecision 17" "endTime 1"
-    do
-        foamDictionary -entry ${entry% *} -set ${entry#* } \
-            system/controlDict > /dev/null || exit 1
-    done
+    foamDictionary -entry endTime -set 1 system/controlDict > /dev/null
+    foamDictionary -entry coupling.parallelParticleSolve -set distributed \
+        constant/particleProperties > /dev/null || exit 1
     runLogged blockMesh && runLogged decomposePar &&
     runParallel2 fdmSuspensionFoam && runLogged reconstructPar -latestTime &&
     rm -r processor* && mv log.decomposePar log.decomposePar.first &&
