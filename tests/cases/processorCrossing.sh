@@ -43,15 +43,14 @@ cp -r "$work/serial"/{0,constant,system} "$work/distributed"/
     runLogged blockMesh && runLogged fdmSuspensionFoam
 ) || exit 1
 cp -r "$work/distributed" "$work/redecomposed"
+foamDictionary -entry endTime -set 1 "$work/redecomposed/system/controlDict" \
+    > /dev/null || exit 1
 runBySubdomain "$work/distributed" || exit 1
+runBySubdomain "$work/redecomposed" || exit 1
 (
     cd "$work/redecomposed" || exit 1
-    foamDictionary -entry endTime -set 1 system/controlDict > /dev/null
-    foamDictionary -entry coupling.parallelParticleSolve -set distributed \
-        constant/particleProperties > /dev/null || exit 1
-    runLogged blockMesh && runLogged decomposePar &&
-    runParallel2 fdmSuspensionFoam && runLogged reconstructPar -latestTime &&
-    rm -r processor* && mv log.decomposePar log.decomposePar.first &&
+    runLogged reconstructPar -latestTime && rm -r processor* &&
+    mv log.decomposePar log.decomposePar.first &&
     runLogged decomposePar -latestTime || exit 1
     foamDictionary -entry endTime -set 1.4 system/controlDict > /dev/null
     foamDictionary -entry startFrom -set latestTime system/controlDict \
