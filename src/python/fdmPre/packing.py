@@ -69,15 +69,21 @@ def _pairs(x, r, box, skin):
 def _relax(x, r, box, gap, iters, tol, free):
     """Steepest descent on sum of squared overlaps (pairs and walls) with
     clearance gap, moving the spheres flagged free; returns the largest
-    remaining overlap."""
-    skin = 2 * r.max()
-    I, J = _pairs(x, r, box, skin)
+    remaining overlap.
+
+    The pair list holds the pairs within gap + skin and is rebuilt once a
+    sphere has moved a quarter skin along an axis (at most 0.43 skin), so
+    no pair closer than gap is ever missing.  Half a radius is enough:
+    the list is a seventh of that of a skin of two radii, the sums the
+    same."""
+    skin = 0.5 * r.max()
+    I, J = _pairs(x, r, box, gap + skin)
     walls = ~box.periodic
     moved = np.zeros_like(x)
     worst = np.inf
     for it in range(iters):
         if np.abs(moved).max() > 0.25 * skin:
-            I, J = _pairs(x, r, box, skin)
+            I, J = _pairs(x, r, box, gap + skin)
             moved[:] = 0
         dx = np.zeros_like(x)
         d = box.image(x[J] - x[I])
@@ -88,8 +94,12 @@ def _relax(x, r, box, gap, iters, tol, free):
         if hit.any():
             n = d[hit] / dist[hit, None]
             push = 0.5 * over[hit, None] * n
-            np.add.at(dx, I[hit], -push)
-            np.add.at(dx, J[hit], push)
+            # One pass in the order np.add.at would take (I, then J):
+            # the same sums to the last bit, a fraction of its time
+            ends = np.concatenate((I[hit], J[hit]))
+            for k in range(3):
+                dx[:, k] = np.bincount(ends, np.concatenate(
+                    (-push[:, k], push[:, k])), len(x))
         for k in np.nonzero(walls)[0]:
             lo = box.lo[k] + r + gap
             hi = box.lo[k] + box.span[k] - r - gap
