@@ -5,7 +5,7 @@
 
 #include "suspensionStress.H"
 #include "addToRunTimeSelectionTable.H"
-#include "IFstream.H"
+#include "particleStateFile.H"
 #include "OFstream.H"
 #include "OSspecific.H"
 #include "freshOutputFile.H"
@@ -74,8 +74,7 @@ bool Foam::functionObjects::suspensionStress::readSample
     {
         return false;
     }
-    IFstream is(file);
-    const dictionary state(is);
+    const dictionary state(fdm::readParticleStateFile(file));
     if (!state.found("radius"))
     {
         FatalIOErrorInFunction(state)
