@@ -1,8 +1,9 @@
 """Unit tests of etc/caseFunctions: the restart guard removeIncompleteWrites
 (a write cut short by a kill is removed, whole writes are kept),
 setAdhesion (the adhesive contact law set in a copy of the Couette
-tutorial's particleProperties, read back with foamDictionary) and
-runSaving (a checkpoint saved during a run and after it)."""
+tutorial's particleProperties, read back with foamDictionary), setTimeStep
+(the step with records and writes kept in strain) and runSaving (a
+checkpoint saved during a run and after it)."""
 
 import os
 import shutil
@@ -104,6 +105,43 @@ class SetAdhesion(unittest.TestCase):
         self.assertEqual(entry("adhesionNumber"), "2.5")
         self.assertEqual(entry("meanDeformation"), "0.05")
         self.assertEqual(entry("friction"), "0.5")
+
+
+class SetTimeStep(unittest.TestCase):
+
+    def test_keeps_records_and_writes_in_strain(self):
+        """gammaDot deltaT 1e-3 with a record every 0.16 and a write every
+        0.5 strain: 160 and 500 steps; an interval below the step: one."""
+        tmp = tempfile.TemporaryDirectory()
+        self.addCleanup(tmp.cleanup)
+        tutorial = os.path.join(os.path.dirname(FUNCTIONS), os.pardir,
+                                "tutorials", "couette")
+        for path in ("system/controlDict", "constant/particleProperties"):
+            os.makedirs(os.path.join(tmp.name, os.path.dirname(path)),
+                        exist_ok=True)
+            shutil.copy(os.path.join(tutorial, path),
+                        os.path.join(tmp.name, path))
+        env = dict(os.environ, PWD=tmp.name)
+
+        def set_step(dt, record, write):
+            subprocess.run(["bash", "-c", '. "$0" && setTimeStep "$@"',
+                            FUNCTIONS, dt, record, write], cwd=tmp.name,
+                           env=env, check=True)
+
+        def entry(path, key):
+            return subprocess.run(
+                ["foamDictionary", "-entry", key, "-value", path],
+                cwd=tmp.name, env=env, check=True, capture_output=True,
+                text=True).stdout.strip()
+        set_step("1e-3", "0.16", "0.5")
+        self.assertEqual(float(entry("system/controlDict", "deltaT")), 1e-3)
+        self.assertEqual(entry("system/controlDict", "writeInterval"), "500")
+        self.assertEqual(entry("constant/particleProperties",
+                               "output.timeSeriesInterval"), "160")
+        set_step("4e-3", "1e-3", "0.5")
+        self.assertEqual(entry("system/controlDict", "writeInterval"), "125")
+        self.assertEqual(entry("constant/particleProperties",
+                               "output.timeSeriesInterval"), "1")
 
 
 class RunSaving(unittest.TestCase):

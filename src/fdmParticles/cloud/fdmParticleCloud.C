@@ -247,6 +247,7 @@ Foam::fdmParticleCloud::fdmParticleCloud
     domainVolume_(gSum(mesh.V())),
     solved_(false),
     historyDeltaT_(0),
+    alternation_(),
     firstSolveDone_(false),
     verbose_(true),
     gatheredTimeIndex_(-1),

@@ -14,6 +14,56 @@ Description
 #include "adamsBashforth.H"
 #include "leesEdwardsShear.H"
 
+// * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+void Foam::fdmParticleCloud::checkAlternation(const scalar deltaT)
+{
+    // The zig-zag is measured against the contacts' roughness, over which
+    // their forces change; without contacts there is nothing to bias
+    const scalar roughness = contacts_->pairReach();
+    if (roughness <= 0)
+    {
+        return;
+    }
+    boolList moved;
+    if (distributedSolve_)
+    {
+        moved.setSize(state_.U.size());
+        forAll(moved, p)
+        {
+            moved[p] = halo_.owns(p);
+        }
+    }
+    const scalar limit =
+        fdm::velocityAlternation::roughnessFraction*roughness;
+    scalar zigzag = 0;
+    const bool warn = alternation_.check
+    (
+        state_.U, state_.Uold, deltaT, limit, moved, distributedSolve_, zigzag
+    );
+    if (verbose_ && zigzag >= 0)
+    {
+        Info<< "Velocity alternation: positions zig-zag by "
+            << zigzag/roughness << " h_r rms" << endl;
+    }
+    if (warn)
+    {
+        WarningInFunction
+            << "Time " << mesh_.time().timeName() << ": the particle"
+            << " velocities alternate from step to step; for "
+            << fdm::velocityAlternation::stepsInARow << " steps the"
+            << " positions zig-zagged by more than "
+            << fdm::velocityAlternation::roughnessFraction << " h_r rms ("
+            << zigzag/roughness << " h_r now): the two-step position"
+            << " update is beyond its stable step and the contact stresses"
+            << " are biased (adhesive contacts at gammaDot deltaT 4e-3:"
+            << " eta_core 16 % low)." << nl
+            << "    Lower deltaT in system/controlDict (there 1e-3: within"
+            << " 0.2 %)." << endl;
+    }
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 void Foam::fdmParticleCloud::prepare(volVectorField& lambda)
@@ -66,6 +116,7 @@ void Foam::fdmParticleCloud::move(const scalar deltaT, volVectorField& lambda)
             << abort(FatalError);
     }
 
+    checkAlternation(deltaT);
     for (pairInteraction& pi : pairInteractions_)
     {
         pi.advance(state_.U, state_.Omega, deltaT);
