@@ -81,26 +81,46 @@ class RemoveIncompleteWrites(unittest.TestCase):
         self.assertTrue(os.path.exists(os.path.join(case, "1.5", "U")))
 
 
+class TutorialCopy:
+    """The Couette tutorial's files `paths` copied into a temporary case;
+    the case functions called there, the dictionaries read back with
+    foamDictionary."""
+
+    TUTORIAL = os.path.join(os.path.dirname(FUNCTIONS), os.pardir,
+                            "tutorials", "couette")
+
+    def __init__(self, test, paths):
+        tmp = tempfile.TemporaryDirectory()
+        test.addCleanup(tmp.cleanup)
+        self.case = tmp.name
+        for path in paths:
+            os.makedirs(os.path.join(self.case, os.path.dirname(path)),
+                        exist_ok=True)
+            shutil.copy(os.path.join(self.TUTORIAL, path),
+                        os.path.join(self.case, path))
+        # OpenFOAM warns on standard output when PWD is not the cwd
+        self.env = dict(os.environ, PWD=self.case)
+
+    def call(self, function, *args):
+        subprocess.run(["bash", "-c", '. "$0" && ' + function + ' "$@"',
+                        FUNCTIONS, *args], cwd=self.case, env=self.env,
+                       check=True)
+
+    def entry(self, path, key):
+        return subprocess.run(
+            ["foamDictionary", "-entry", key, "-value", path],
+            cwd=self.case, env=self.env, check=True, capture_output=True,
+            text=True).stdout.strip()
+
+
 class SetAdhesion(unittest.TestCase):
 
     def test_sets_the_law_the_number_and_the_stiffness(self):
-        tmp = tempfile.TemporaryDirectory()
-        self.addCleanup(tmp.cleanup)
-        os.makedirs(os.path.join(tmp.name, "constant"))
-        shutil.copy(os.path.join(os.path.dirname(FUNCTIONS), os.pardir,
-                                 "tutorials", "couette", "constant",
-                                 "particleProperties"),
-                    os.path.join(tmp.name, "constant"))
-        # OpenFOAM warns on standard output when PWD is not the cwd
-        env = dict(os.environ, PWD=tmp.name)
-        subprocess.run(["bash", "-c", '. "$0" && setAdhesion 2.5 0.05',
-                        FUNCTIONS], cwd=tmp.name, env=env, check=True)
+        case = TutorialCopy(self, ["constant/particleProperties"])
+        case.call("setAdhesion", "2.5", "0.05")
 
         def entry(key):
-            return subprocess.run(
-                ["foamDictionary", "-entry", "contact." + key, "-value",
-                 "constant/particleProperties"], cwd=tmp.name, env=env,
-                check=True, capture_output=True, text=True).stdout.strip()
+            return case.entry("constant/particleProperties", "contact." + key)
         self.assertEqual(entry("model"), "adhesiveHertz")
         self.assertEqual(entry("adhesionNumber"), "2.5")
         self.assertEqual(entry("meanDeformation"), "0.05")
@@ -112,36 +132,20 @@ class SetTimeStep(unittest.TestCase):
     def test_keeps_records_and_writes_in_strain(self):
         """gammaDot deltaT 1e-3 with a record every 0.16 and a write every
         0.5 strain: 160 and 500 steps; an interval below the step: one."""
-        tmp = tempfile.TemporaryDirectory()
-        self.addCleanup(tmp.cleanup)
-        tutorial = os.path.join(os.path.dirname(FUNCTIONS), os.pardir,
-                                "tutorials", "couette")
-        for path in ("system/controlDict", "constant/particleProperties"):
-            os.makedirs(os.path.join(tmp.name, os.path.dirname(path)),
-                        exist_ok=True)
-            shutil.copy(os.path.join(tutorial, path),
-                        os.path.join(tmp.name, path))
-        env = dict(os.environ, PWD=tmp.name)
-
-        def set_step(dt, record, write):
-            subprocess.run(["bash", "-c", '. "$0" && setTimeStep "$@"',
-                            FUNCTIONS, dt, record, write], cwd=tmp.name,
-                           env=env, check=True)
-
-        def entry(path, key):
-            return subprocess.run(
-                ["foamDictionary", "-entry", key, "-value", path],
-                cwd=tmp.name, env=env, check=True, capture_output=True,
-                text=True).stdout.strip()
-        set_step("1e-3", "0.16", "0.5")
-        self.assertEqual(float(entry("system/controlDict", "deltaT")), 1e-3)
-        self.assertEqual(entry("system/controlDict", "writeInterval"), "500")
-        self.assertEqual(entry("constant/particleProperties",
-                               "output.timeSeriesInterval"), "160")
-        set_step("4e-3", "1e-3", "0.5")
-        self.assertEqual(entry("system/controlDict", "writeInterval"), "125")
-        self.assertEqual(entry("constant/particleProperties",
-                               "output.timeSeriesInterval"), "1")
+        case = TutorialCopy(self, ["system/controlDict",
+                                   "constant/particleProperties"])
+        case.call("setTimeStep", "1e-3", "0.16", "0.5")
+        self.assertEqual(float(case.entry("system/controlDict", "deltaT")),
+                         1e-3)
+        self.assertEqual(case.entry("system/controlDict", "writeInterval"),
+                         "500")
+        self.assertEqual(case.entry("constant/particleProperties",
+                                    "output.timeSeriesInterval"), "160")
+        case.call("setTimeStep", "4e-3", "1e-3", "0.5")
+        self.assertEqual(case.entry("system/controlDict", "writeInterval"),
+                         "125")
+        self.assertEqual(case.entry("constant/particleProperties",
+                                    "output.timeSeriesInterval"), "1")
 
 
 class RunSaving(unittest.TestCase):
