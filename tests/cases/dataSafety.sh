@@ -11,8 +11,9 @@
 #   5. physical input: deltaT 0, < 0 and 1e400, nu and U 1e400 (a clear error
 #      under FOAM_SIGFPE, not a trap), endTime before the start, a
 #      non-finite position, an empty list, a wrong count, a step that moves
-#      a sphere by more than a mesh spacing (nothing of it written), changed
-#      radii on restart
+#      a sphere by more than a mesh spacing (nothing of it written; the same
+#      deltaT with endTime 0, one solve and no step, runs), changed radii on
+#      restart
 # Checks in checkDataSafety.py.
 source "${0%/*}/caseTestFunctions"
 
@@ -144,6 +145,18 @@ expectStopIn unresolvedStep "mesh spacings) in one step" \
     && [ ! -f "$unresolved/0/particleState" ] \
     && [ ! -f "$unresolved/postProcessing/particles.h5" ] \
     || fail "unresolved step wrote a time or records"
+# The same deltaT with endTime 0 is one steady solve that no step follows
+# (subGridCalibration's and the validations' set-up): it runs and writes
+# the record of that solve
+single="$work/singleSolve"
+cp -r "$base" "$single"
+(
+    cd "$single" || exit 1
+    foamDictionary -entry deltaT -set 1 system/controlDict > /dev/null
+    foamDictionary -entry endTime -set 0 system/controlDict > /dev/null
+    runLogged fdmSuspensionFoam
+) && [ -f "$single/postProcessing/particles.h5" ] \
+    || fail "a single solve at endTime 0 with deltaT 1 stopped"
 changed="$work/changedRadius"
 cp -r "$work/straight" "$changed"
 rm -rf "$changed/0.4"

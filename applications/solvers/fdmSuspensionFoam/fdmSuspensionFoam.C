@@ -63,6 +63,18 @@ Usage
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
+//- Whether runTime.loop() takes another step (Time::run's own test, without
+//  its calls to the function objects).  The velocities of a solve that no
+//  step follows move nothing: the single steady solve at endTime 0 of
+//  subGridCalibration and of the validations, whose deltaT is not a step
+static bool stepFollows(const Foam::Time& runTime)
+{
+    return
+        runTime.value()
+      < runTime.endTime().value() - 0.5*runTime.deltaTValue();
+}
+
+
 int main(int argc, char *argv[])
 {
     argList::addNote
@@ -109,6 +121,12 @@ int main(int argc, char *argv[])
         #include "stokesSolve.H"
         // The start time shows the particles too (paraFoam, .foam)
         particles.writeLagrangian();
+    }
+    else if (!particles.empty() && stepFollows(runTime))
+    {
+        // Velocities read from the start time, perhaps written with another
+        // deltaT: the first step moves by them
+        particles.checkMotionResolved(runTime.deltaTValue());
     }
     // State at the start time: solved above or read from a restart
     particles.writeTimeSeries();
