@@ -56,9 +56,10 @@ L = 12.0
 ANGLES = {"B": 0.0, "A": 45.0, "Amirror": 135.0}
 
 
-def solve(gap, angle, offset, work):
+def solve(gap, angle, offset, work, pair_table=None, cell=L):
     """U2 - U1 for r = x2 - x1 = (2 + gap)(cos, sin, 0), pair centred at
-    the cell centre shifted by offset (units of Delta)."""
+    the cell centre shifted by offset (units of Delta); with the solver's
+    default sub-grid pair table or the one named, in a cell of side cell."""
     r = 2.0 + gap
     th = np.radians(angle)
     d = np.array([np.cos(th), np.sin(th), 0.0])
@@ -66,10 +67,17 @@ def solve(gap, angle, offset, work):
     case = os.path.join(work, "gap%g_theta%g_%s" % (
         gap, angle, "_".join("%g" % o for o in offset)))
     fill_template(os.path.join(HERE, "template"), case, {
-        "@L@": "%g" % L, "@L2@": "%g" % (L / 2), "@H2@": "%g" % (L / 2),
-        "@N@": "%d" % round(L / DELTA), "@ENDTIME@": "1e-3", "@DT@": "1e-3",
+        "@L@": "%g" % cell, "@L2@": "%g" % (cell / 2),
+        "@H2@": "%g" % (cell / 2), "@N@": "%d" % round(cell / DELTA), "@ENDTIME@": "1e-3", "@DT@": "1e-3",
         "@WRITEINTERVAL@": "1", "@LAMBDATOL@": "1e-7",
         "@X1@": vec(centre - 0.5 * r * d), "@X2@": vec(centre + 0.5 * r * d)})
+    if pair_table:
+        path = os.path.join(case, "constant", "particleProperties")
+        with open(path) as f:
+            text = f.read()
+        with open(path, "w") as f:
+            f.write(text.replace("walls false;", 'walls false; pairTables'
+                                 ' ("%s");' % os.path.abspath(pair_table)))
     s = run_case(case)
     V = s["velocity"][1] - s["velocity"][0]
     return float(V @ d), float(V @ np.array([-d[1], d[0], 0.0]))
