@@ -16,6 +16,13 @@ out (anchored where the solver resolves the interaction better) corrects
 these gaps too; this study measures whether it does, at the same
 configurations.
 
+Measured (2026-12-01, cutoffStudy.dat): the 2.5 Delta table brings A
+to within 0.005 at gap 0.3 but not B (-0.0137 -> -0.0125, and -0.0178 at
+gap 0.2); the 16 a cell raises B at 0.3 by 0.0047.  The Y offsets are
+near-constant from 0.3 to 0.5 (Y^G_11 0.40, 0.34, 0.35: the box), so the
+anchor was already right for the Y functions; B's miss is the cell and
+the position scatter, not the cut-off (validation/README.md).
+
     cutoffStudy.py [--variants thesis,wide] [--gaps 0.1,0.2,0.3,0.4]
                    [--positions 2] [--jobs 2]
 
