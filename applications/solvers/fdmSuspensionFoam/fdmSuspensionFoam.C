@@ -75,20 +75,27 @@ static bool stepFollows(const Foam::Time& runTime)
 }
 
 
-int main(int argc, char *argv[])
+//- The application's note and its own option (-quiet)
+static void addOptions()
 {
-    argList::addNote
+    Foam::argList::addNote
     (
         "Stokes-flow solver for particle-resolved suspensions"
         " (Fictitious Domain Method, SIMPLEC)"
     );
 
-    argList::addBoolOption
+    Foam::argList::addBoolOption
     (
         "quiet",
         "One summary line per time step: no linear-solver, outer-iteration,"
         " contact or timing lines (warnings and errors stay)"
     );
+}
+
+
+int main(int argc, char *argv[])
+{
+    addOptions();
 
     // Temporary fields reuse freed heap memory instead of fresh pages
     fdm::keepFreedMemory();
