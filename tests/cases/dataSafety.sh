@@ -11,7 +11,8 @@
 #   5. physical input: deltaT 0, < 0 and 1e400, nu and U 1e400 (a clear error
 #      under FOAM_SIGFPE, not a trap), endTime before the start, a
 #      non-finite position, an empty list, a wrong count, a step that moves
-#      a sphere by more than a mesh spacing (nothing of it written; the same
+#      a sphere by more than a mesh spacing where a step follows (deltaT 1,
+#      endTime 2: nothing of it written; the same
 #      deltaT with endTime 0, one solve and no step, runs), changed radii on
 #      restart
 # Checks in checkDataSafety.py.
@@ -140,7 +141,8 @@ expectStopIn wrongCount "announces 3 particles but holds 2" \
 # anything of it is written
 unresolved="$work/unresolvedStep"
 expectStopIn unresolvedStep "mesh spacings) in one step" \
-    foamDictionary -entry deltaT -set 1 system/controlDict
+    "foamDictionary -entry deltaT -set 1 system/controlDict &&" \
+    "foamDictionary -entry endTime -set 2 system/controlDict"
 [ -z "$(ls -d "$unresolved/"0.* "$unresolved/"[1-9]* 2> /dev/null)" ] \
     && [ ! -f "$unresolved/0/particleState" ] \
     && [ ! -f "$unresolved/postProcessing/particles.h5" ] \
