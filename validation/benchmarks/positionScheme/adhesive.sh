@@ -21,14 +21,9 @@ source ../../../etc/bashrc
 
 window=${1:-0.32}
 work=$FDM_PROJECT_DIR/build/benchmarks/positionScheme/adhesive
-point=phi0.37_10x20x10_G4.4
-mkdir -p "$work/checkpoints/$point"
-cp adhesiveState/particleState.15.5 "$work/checkpoints/$point/"
-# The point set up in $work and restored at strain 15.5 (not run: it is
-# at its endTime)
-FDM_RUNPOINT_RUNS=$work FDM_RUNPOINT_CHECKPOINTS=$work/checkpoints \
-    ../../../tutorials/couette/thesisSweep/runPoint -adhesion 4.4 0.37 20 10 \
-    15.5 4e-3 2 10 > "$work/log.setup" 2>&1 || exit 1
+. adhesiveState/restore
+point=$adhesivePoint
+restoreAdhesiveState "$work" 4e-3 2 || exit 1
 end=$(awk -v w="$window" 'BEGIN { print 15.5 + w }')
 for run in "5e-4 0.02" "1e-3 0.02" "2e-3 0.02" "4e-3 0.02" \
     "1e-3 0.16" "2e-3 0.16" "4e-3 0.16"

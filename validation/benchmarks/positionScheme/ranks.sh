@@ -22,18 +22,14 @@ source ../../../etc/bashrc
 
 window=${1:-0.3}
 work=$FDM_PROJECT_DIR/build/benchmarks/positionScheme/ranks
-point=phi0.37_10x20x10_G4.4
+. adhesiveState/restore
+point=$adhesivePoint
 end=$(awk -v w="$window" 'BEGIN { print 15.5 + w }')
 
 # setUp NPROCS: the point restored at strain 15.5 in $work/np<NPROCS>
 setUp()
 {
-    local base=$work/np$1
-    mkdir -p "$base/checkpoints/$point"
-    cp adhesiveState/particleState.15.5 "$base/checkpoints/$point/"
-    FDM_RUNPOINT_RUNS=$base FDM_RUNPOINT_CHECKPOINTS=$base/checkpoints \
-        ../../../tutorials/couette/thesisSweep/runPoint -adhesion 4.4 0.37 \
-        20 10 15.5 1e-3 "$1" 10 > "$base/log.setup" 2>&1
+    restoreAdhesiveState "$work/np$1" 1e-3 "$1"
 }
 
 # start NPROCS NAME: a copy of the restored point run to $end in the
