@@ -111,16 +111,20 @@ def state_files(case):
 def dem_state(path):
     """One lubricatedDEMFoam particleState: position, velocity (relative to
     the affine flow) N x 3, radius N, mobile N (bool) and stresslet N x 6
-    (xx xy xz yy yz zz), the sum of its contact and lubrication parts."""
+    (xx xy xz yy yz zz), the sum of its contact and lubrication parts, and
+    stressletContact, its contact parts alone."""
     from .particleCase import read_list
     with open(path) as f:
         text = f.read()
+    parts = {part: read_list(text, "stresslet_" + part, 6)
+             for part in STRESSLET_PARTS}
     return {"position": read_list(text, "position", 3),
             "velocity": read_list(text, "velocity", 3),
             "radius": read_list(text, "radius", 1),
             "mobile": read_list(text, "mobile", 1) > 0.5,
-            "stresslet": sum(read_list(text, "stresslet_" + part, 6)
-                             for part in STRESSLET_PARTS)}
+            "stresslet": sum(parts.values()),
+            "stressletContact": sum(parts[p] for p in STRESSLET_PARTS
+                                    if p.endswith("Contact"))}
 
 
 def read_series(case):
