@@ -8,8 +8,8 @@ wall bottom), the core (--layer a away from both) volume fraction (exact
 sphere-slab volumes), the core shear rate (slope of the mean particle
 velocity), the core stresses from the binned stresslets, hence the
 particle pressure P = -sigma_yy (the imposed one where a pressureWall is
-set), I_v = eta gammaDot_core/P, mu = sigma_xy/P and its contact part
-mu_c, eta_r = sigma_xy/(eta gammaDot_core), against phi/phi_m =
+set), I_v = eta gammaDot_core/P, mu = -sigma_xy/sigma_yy in the core and
+its contact part mu_c, eta_r = sigma_xy/(eta gammaDot_core), against phi/phi_m =
 1/(1 + I_v^1/2) (eq 15), mu(I_v) (eq 14), phi_m(mu_m) (eq 13).  With
 --against, a results.dat of demFrictionSweep: its article2radius runs
 (cutoff column -2) at the same friction interpolated in ln I_v to this
@@ -127,8 +127,9 @@ def main():
         f" ({p2:.4f}) | {pm / (1 + np.sqrt(iv)):.4f} (phi_m {pm:.4f}) |",
         f"| phi' (1 + I_v^1/2) | {p2 * (1 + np.sqrt(iv)):.4f} | {pm:.4f} |",
         f"| core -sigma_yy / P | {-syy / P:.3f} | 1 |",
-        f"| mu = sigma_xy / P | {sxy / P:.3f} | {model_mu(iv, pm):.3f} |",
-        f"| mu_c (contact part) | {sxy_c / P:.3f} |"
+        f"| mu = -sigma_xy/sigma_yy | {-sxy / syy:.3f} |"
+        f" {model_mu(iv, pm):.3f} |",
+        f"| mu_c (contact part) | {-sxy_c / syy:.3f} |"
         f" {model_mu_contact(iv):.3f} |",
         f"| eta_r = sigma_xy/(eta gammaDot_core) | {sxy / (eta * rate):.2f}"
         " | - |",
@@ -140,8 +141,8 @@ def main():
                   f" {iv:.4f}): phi {tri['phi']:.4f}, mu {tri['mu']:.3f},"
                   f" mu_c {tri['muContact']:.3f}, eta_r {tri['eta_r']:.2f}"
                   f"; walled minus tri-periodic: phi"
-                  f" {phi - tri['phi']:+.4f}, mu {sxy / P - tri['mu']:+.3f},"
-                  f" mu_c {sxy_c / P - tri['muContact']:+.3f}."]
+                  f" {phi - tri['phi']:+.4f}, mu {-sxy / syy - tri['mu']:+.3f},"
+                  f" mu_c {-sxy_c / syy - tri['muContact']:+.3f}."]
     elif args.against:
         lines += ["", f"No article2radius runs of {args.against} at mu_m"
                   f" {mu_m:g} around I_v {iv:.4f}."]
