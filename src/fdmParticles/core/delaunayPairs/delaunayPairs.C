@@ -38,16 +38,49 @@ typedef Kernel::Weighted_point_3 WeightedPoint;
 typedef std::vector<std::pair<WeightedPoint, label>> pointList;
 
 
-//- Whether x lies within margin of the box along every direction
-bool inWindow(const fdm::periodicBox& box, const point& x, const scalar margin)
+//- The domain the triangulation describes, per direction: the box along
+//  its periodic directions; along a walled one the slab between the
+//  planes tangent to the outermost spheres, whose mirror images stand in
+//  for the wall
+struct domainBounds
+{
+    FixedList<bool, 3> periodic;
+    point lo;
+    point hi;
+};
+
+
+domainBounds boundsOf
+(
+    const fdm::periodicBox& box,
+    const UList<point>& positions,
+    const UList<scalar>& radii
+)
+{
+    domainBounds b{box.periodic(), box.min(), box.min() + box.span()};
+    for (direction d = 0; d < 3; ++d)
+    {
+        if (!b.periodic[d])
+        {
+            b.lo[d] = GREAT;
+            b.hi[d] = -GREAT;
+            forAll(positions, i)
+            {
+                b.lo[d] = min(b.lo[d], positions[i][d] - radii[i]);
+                b.hi[d] = max(b.hi[d], positions[i][d] + radii[i]);
+            }
+        }
+    }
+    return b;
+}
+
+
+//- Whether x lies within margin of the domain along every direction
+bool inWindow(const domainBounds& b, const point& x, const scalar margin)
 {
     for (direction d = 0; d < 3; ++d)
     {
-        if
-        (
-            x[d] < box.min()[d] - margin
-         || x[d] >= box.min()[d] + box.span()[d] + margin
-        )
+        if (x[d] < b.lo[d] - margin || x[d] >= b.hi[d] + margin)
         {
             return false;
         }
@@ -56,36 +89,61 @@ bool inWindow(const fdm::periodicBox& box, const point& x, const scalar margin)
 }
 
 
-//- Append the periodic images of the centres that lie within outer but
-//  not within inner of the box faces to points, their particles to
-//  source.  The image ny periods up in y sits +ny s along x (Lees-Edwards);
-//  nx reaches -2..2 so that the shifted images still cover x.
+//- Coordinate d of the image n of x: n periods along a periodic direction,
+//  along a walled one the mirror image in the lower (n = -1) or upper
+//  (n = 1) plane
+scalar imageCoordinate
+(
+    const domainBounds& b,
+    const direction d,
+    const scalar x,
+    const label n
+)
+{
+    if (b.periodic[d])
+    {
+        return x + n*(b.hi[d] - b.lo[d]);
+    }
+    return n < 0 ? 2*b.lo[d] - x : n > 0 ? 2*b.hi[d] - x : x;
+}
+
+
+//- Append the images of the centres that lie within outer but not within
+//  inner of the domain to points, their particles to source and whether
+//  they are mirror images to mirrored.  The periodic image ny periods up
+//  in y sits +ny s along x (Lees-Edwards); nx reaches -2..2 so that the
+//  shifted images still cover x.
 void addImages
 (
     const fdm::periodicBox& box,
+    const domainBounds& b,
     const UList<point>& positions,
     const UList<scalar>& radii,
     const scalar inner,
     const scalar outer,
     pointList& points,
-    std::vector<label>& source
+    std::vector<label>& source,
+    std::vector<bool>& mirrored
 )
 {
-    const vector& L = box.span();
+    const bool leesEdwards = b.periodic[0] && b.periodic[1];
+    const label nxMax = leesEdwards ? 2 : 1;
     forAll(positions, i)
     {
         for (label nz = -1; nz <= 1; ++nz)
         for (label ny = -1; ny <= 1; ++ny)
-        for (label nx = -2; nx <= 2; ++nx)
+        for (label nx = -nxMax; nx <= nxMax; ++nx)
         {
+            const point& p = positions[i];
             const point x
             (
-                positions[i].x() + nx*L.x() + ny*box.shearOffset(),
-                positions[i].y() + ny*L.y(),
-                positions[i].z() + nz*L.z()
+                imageCoordinate(b, 0, p.x(), nx)
+              + (leesEdwards ? ny*box.shearOffset() : 0),
+                imageCoordinate(b, 1, p.y(), ny),
+                imageCoordinate(b, 2, p.z(), nz)
             );
-            if ((nx || ny || nz) && inWindow(box, x, outer)
-             && !inWindow(box, x, inner))
+            if ((nx || ny || nz) && inWindow(b, x, outer)
+             && !inWindow(b, x, inner))
             {
                 points.emplace_back
                 (
@@ -97,16 +155,21 @@ void addImages
                     label(source.size())
                 );
                 source.push_back(i);
+                mirrored.push_back
+                (
+                    (nx && !b.periodic[0]) || (ny && !b.periodic[1])
+                 || (nz && !b.periodic[2])
+                );
             }
         }
     }
 }
 
 
-//- Distance from x to the outer boundary of the box widened by margin
+//- Distance from x to the outer boundary of the domain widened by margin
 scalar clearance
 (
-    const fdm::periodicBox& box,
+    const domainBounds& b,
     const Kernel::Point_3& x,
     const scalar margin
 )
@@ -114,26 +177,26 @@ scalar clearance
     scalar c = GREAT;
     for (direction d = 0; d < 3; ++d)
     {
-        const scalar lo = box.min()[d] - margin;
-        const scalar hi = box.min()[d] + box.span()[d] + margin;
-        c = min(c, min(x[d] - lo, hi - x[d]));
+        c = min(c, min(x[d] - (b.lo[d] - margin), b.hi[d] + margin - x[d]));
     }
     return c;
 }
 
 
 //- The edges (particle pairs) of the tetrahedra with a vertex among the
-//  first n points, when each of these tetrahedra is regular with respect
-//  to all images, also those beyond the margin: a point q outside the
-//  widened box has power |c - q|^2 - w_q >= clearance^2 - wMax at the
+//  first n points, mirror images excepted (their faces lie beyond the
+//  walls), when each of these tetrahedra is regular with respect to all
+//  images, also those beyond the margin: a point q outside the widened
+//  domain has power |c - q|^2 - w_q >= clearance^2 - wMax at the
 //  orthogonal centre c, so clearance^2 > R^2 + wMax suffices.  False
 //  (edges incomplete) when a tetrahedron fails.
 bool collectEdges
 (
-    const fdm::periodicBox& box,
+    const domainBounds& b,
     const Triangulation& rt,
     const label n,
     const std::vector<label>& source,
+    const std::vector<bool>& mirrored,
     const scalar margin,
     const scalar wMax,
     std::vector<std::pair<label, label>>& edges
@@ -164,19 +227,23 @@ bool collectEdges
         const WeightedPoint& p = c->vertex(0)->point();
         const scalar R2 =
             CGAL::squared_distance(centre, p.point()) - p.weight();
-        const scalar gap = clearance(box, centre, margin);
+        const scalar gap = clearance(b, centre, margin);
         if (gap <= 0 || sqr(gap) <= R2 + wMax)
         {
             return false;
         }
-        for (int a = 0; a < 4; ++a)
+        for (int k = 0; k < 4; ++k)
         {
-            for (int b = a + 1; b < 4; ++b)
+            for (int l = k + 1; l < 4; ++l)
             {
-                if (v[a] < n || v[b] < n)
+                if
+                (
+                    (v[k] < n || v[l] < n)
+                 && !mirrored[v[k]] && !mirrored[v[l]]
+                )
                 {
-                    const label i = source[v[a]];
-                    const label j = source[v[b]];
+                    const label i = source[v[k]];
+                    const label j = source[v[l]];
                     edges.emplace_back(min(i, j), max(i, j));
                 }
             }
@@ -200,20 +267,20 @@ Foam::fdm::delaunayStatistics Foam::fdm::findDelaunayPairs
 {
     pairs.clear();
     const label n = positions.size();
-    if (!(box.periodic(0) && box.periodic(1) && box.periodic(2)))
-    {
-        FatalErrorInFunction
-            << "Delaunay neighbours are defined here for a cell periodic in"
-            << " x, y and z (walls would need the hull's edges removed)"
-            << abort(FatalError);
-    }
     scalar rMax = 0;
     forAll(radii, i)
     {
         rMax = max(rMax, radii[i]);
     }
-    const vector& L = box.span();
-    const scalar halfPeriod = 0.5*min(L.x(), min(L.y(), L.z()));
+    const domainBounds b(boundsOf(box, positions, radii));
+    const vector L(b.hi - b.lo);
+    // Images beyond half a period would meet their own centre's; a mirror
+    // image of a mirror image lies at least the slab's width outside
+    scalar reach = GREAT;
+    for (direction d = 0; d < 3; ++d)
+    {
+        reach = min(reach, b.periodic[d] ? 0.5*L[d] : L[d]);
+    }
     const scalar spacing = std::cbrt(L.x()*L.y()*L.z()/max(n, label(1)));
 
     // The centres, then images in widening shells until the check passes;
@@ -230,28 +297,35 @@ Foam::fdm::delaunayStatistics Foam::fdm::findDelaunayPairs
         );
         source.push_back(i);
     }
+    std::vector<bool> mirrored(n, false);
     // The orthogonal spheres of a dense packing's tetrahedra are about a
     // radius wide: start from a_max plus the mean spacing, grow by a
     // quarter while the check fails
-    scalar margin = min(rMax + spacing, halfPeriod);
-    addImages(box, positions, radii, 0, margin, points, source);
+    scalar margin = min(rMax + spacing, reach);
+    addImages(box, b, positions, radii, 0, margin, points, source, mirrored);
     Triangulation rt(points.begin(), points.end());
 
     std::vector<std::pair<label, label>> edges;
-    while (!collectEdges(box, rt, n, source, margin, sqr(rMax), edges))
+    while
+    (
+        !collectEdges(b, rt, n, source, mirrored, margin, sqr(rMax), edges)
+    )
     {
-        if (margin >= halfPeriod)
+        if (margin >= reach)
         {
             FatalErrorInFunction
-                << "The periodic images within half a period (" << halfPeriod
-                << ") of the faces do not define the Delaunay"
+                << "The images within " << reach << " of the faces (half a"
+                << " period, or a wall's mirror) do not define the Delaunay"
                 << " triangulation of " << n << " spheres in the cell " << L
                 << ": too few or too sparse particles" << abort(FatalError);
         }
         const scalar inner = margin;
-        margin = min(1.25*margin, halfPeriod);
+        margin = min(1.25*margin, reach);
         points.clear();
-        addImages(box, positions, radii, inner, margin, points, source);
+        addImages
+        (
+            box, b, positions, radii, inner, margin, points, source, mirrored
+        );
         rt.insert(points.begin(), points.end());
     }
 

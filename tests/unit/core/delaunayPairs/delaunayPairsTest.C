@@ -1,7 +1,8 @@
 // Unit tests for Foam::fdm::findDelaunayPairs (regular triangulation of a
 // periodic sphere packing, CGAL), against references that do not use CGAL:
 // the mean degree of the Poisson-Delaunay graph, the radical points of
-// neighbouring spheres, and the invariance under periodic translation
+// neighbouring spheres, and the invariance under periodic translation; a
+// cell with walls also against the periodic cell its mirror images make
 
 #include "delaunayPairs.H"
 #include "mathematicalConstants.H"
@@ -215,21 +216,102 @@ TEST(delaunayPairs, PeriodicTranslationKeepsThePairs)
 }
 
 
-TEST(delaunayPairs, CellWithWallsIsAnError)
+//- A cell periodic in x and z with walls along y
+fdm::periodicBox slab(const scalar L, const scalar H)
 {
-    const fdm::periodicBox box
-    (
-        point::zero, point(10, 10, 10), {true, false, true}
-    );
-    const List<point> x({point(2, 2, 2), point(5, 5, 5), point(7, 3, 8)});
-    const List<scalar> a(3, 1.0);
+    return fdm::periodicBox(point::zero, point(L, H, L), {true, false, true});
+}
+
+
+TEST(delaunayPairs, WalledRadicalPointNeighboursAreFound)
+{
+    const fdm::periodicBox box(slab(16, 14));
+    List<point> x;
+    List<scalar> a;
+    randomPacking(box, 130, 17, x, a);     // volume fraction 0.29
     DynamicList<labelPair> pairs;
-    EXPECT_NE
+    fdm::findDelaunayPairs(box, x, a, pairs);
+
+    const pairSet found(toSet(pairs));
+    const pairSet must(radicalPointPairs(box, x, a));
+    ASSERT_GT(must.size(), x.size());
+    for (const auto& p : must)
+    {
+        EXPECT_TRUE(found.count(p)) << "pair " << p.first << " " << p.second;
+    }
+    // Without the mirror images the convex hull's edges would join
+    // spheres along the walls across the whole cell
+    for (const labelPair& p : pairs)
+    {
+        EXPECT_LT(mag(box.minimumImage(x[p.second()] - x[p.first()])), 8);
+    }
+}
+
+
+// Reference by another path: the spheres and their mirror images in the
+// upper wall's plane fill a cell periodic in y with twice the walls'
+// distance (the two reflections compose to that translation), whose
+// periodic triangulation has the walled cell's pairs between the spheres
+TEST(delaunayPairs, WallsAreTheMirroredCellsPairs)
+{
+    const fdm::periodicBox box(slab(16, 14));
+    List<point> x;
+    List<scalar> a;
+    randomPacking(box, 130, 23, x, a);
+    DynamicList<labelPair> pairs;
+    fdm::findDelaunayPairs(box, x, a, pairs);
+
+    scalar lo = GREAT;
+    scalar hi = -GREAT;
+    forAll(x, i)
+    {
+        lo = min(lo, x[i].y() - a[i]);
+        hi = max(hi, x[i].y() + a[i]);
+    }
+    const label n = x.size();
+    List<point> doubled(2*n);
+    List<scalar> doubledRadii(2*n);
+    forAll(x, i)
+    {
+        doubled[i] = x[i];
+        doubled[n + i] = point(x[i].x(), 2*hi - x[i].y(), x[i].z());
+        doubledRadii[i] = doubledRadii[n + i] = a[i];
+    }
+    const fdm::periodicBox periodic
     (
-        unitTest::errorOf
-        (
-            [&]() { fdm::findDelaunayPairs(box, x, a, pairs); }
-        ).find("periodic in x, y and z"),
-        std::string::npos
+        point(0, lo, 0), point(16, lo + 2*(hi - lo), 16), {true, true, true}
     );
+    DynamicList<labelPair> periodicPairs;
+    fdm::findDelaunayPairs(periodic, doubled, doubledRadii, periodicPairs);
+
+    pairSet reference;
+    for (const labelPair& p : periodicPairs)
+    {
+        if (p.first() < n && p.second() < n)
+        {
+            reference.insert({p.first(), p.second()});
+        }
+    }
+    EXPECT_EQ(toSet(pairs), reference);
+}
+
+
+TEST(delaunayPairs, WalledCellReflectedKeepsThePairs)
+{
+    const fdm::periodicBox box(slab(16, 14));
+    List<point> x;
+    List<scalar> a;
+    randomPacking(box, 130, 29, x, a);
+    DynamicList<labelPair> pairs;
+    fdm::findDelaunayPairs(box, x, a, pairs);
+
+    // Upside down and shifted along the periodic x and z
+    List<point> moved(x.size());
+    forAll(x, i)
+    {
+        moved[i] = box.wrap(point(x[i].x() + 5.1, 14 - x[i].y(), x[i].z() + 9.3));
+    }
+    DynamicList<labelPair> movedPairs;
+    fdm::findDelaunayPairs(box, moved, a, movedPairs);
+    EXPECT_EQ(toSet(pairs), toSet(movedPairs));
 }
