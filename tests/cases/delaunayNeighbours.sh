@@ -14,7 +14,9 @@
 # restart from the state written halfway ends bitwise where the straight
 # run ends (the triangulation schedule is part of the state), and a state
 # written with the cut-off pairs is searched again when the case switches
-# to the Delaunay pairs.
+# to the Delaunay pairs.  With walls along y (article 2's cell) the pairs
+# are Qhull's edges with the spheres' mirror images in the walls (without
+# them this packing would list 78 edges of the convex hull too).
 source "${0%/*}/caseTestFunctions"
 
 work=$(caseWorkDir delaunayNeighbours)
@@ -107,3 +109,47 @@ grep -q "lists cutoff pairs; the delaunay pairs are searched at the first step" 
     "$work/switched/log.lubricatedDEMFoam" \
     || { echo "FAILED: a cut-off state was not searched again"; exit 1; }
 echo "   a state with cut-off pairs continued with the Delaunay pairs: searched again"
+
+# Walls along y (article 2's cell): the pairs are the Qhull edges between
+# the spheres of the centres, their periodic images along x and z and the
+# mirror images of all these in the planes tangent to the lowest and the
+# highest sphere (the power cells clipped to the slab between them)
+walled="$work/walled"
+rm -rf "$walled" && mkdir -p "$walled"
+cp -r "$work"/{system,constant} "$walled"/
+foamDictionary -entry cell -set "{ min (0 0 0); max (12 14 12); shearRate 0; open (y); }" \
+    "$walled/constant/particleProperties" > /dev/null
+(cd "$walled" && runLogged fdmPackParticles --box 12 14 12 --walls y --ratio 1 \
+    --phi 0.45 --gap 0.05 --seed 4 -o constant/particleList \
+    && runLogged lubricatedDEMFoam) || exit 1
+"$FDM_PYTHON" - "$walled" <<'PY' || exit 1
+import itertools, os, sys
+import numpy as np
+from scipy.spatial import Delaunay
+from fdmPost.particleCase import read_list
+
+work = sys.argv[1]
+text = open(os.path.join(work, "8e-05", "particleState")).read()
+x = read_list(text, "position", 3)
+a = read_list(text, "radius", 1)
+pairs = read_list(text, "pairs", 2).astype(int)
+n, L = len(x), 12.0
+lo, hi = (x[:, 1] - a).min(), (x[:, 1] + a).max()
+
+images = [x + L*np.array((i, 0, k)) for i in (-1, 0, 1) for k in (-1, 0, 1)]
+images.sort(key=lambda p: np.abs(p - x).sum())      # the centres first
+plain = np.concatenate(images)
+mirrored = [plain*(1, -1, 1) + (0, 2*plane, 0) for plane in (lo, hi)]
+points = np.concatenate([plain] + mirrored)
+edges = set()
+for simplex in Delaunay(points).simplices:
+    for u, v in itertools.combinations(simplex, 2):
+        if (u < n or v < n) and u < len(plain) and v < len(plain):
+            i, j = u % n, v % n
+            edges.add((min(i, j), max(i, j)))
+listed = set(map(tuple, pairs))
+print("   walls along y: %d particles, %d listed pairs, %d Qhull edges"
+      " (mirror images in the walls), %d in both"
+      % (n, len(listed), len(edges), len(listed & edges)))
+sys.exit(0 if listed == edges and len(pairs) == len(listed) else 1)
+PY
