@@ -9,8 +9,9 @@ sphere-slab volumes), the core shear rate (slope of the mean particle
 velocity), the core stresses from the binned stresslets, hence the
 particle pressure P = -sigma_yy (the imposed one where a pressureWall is
 set), I_v = eta gammaDot_core/P, mu = -sigma_xy/sigma_yy in the core and
-its contact part mu_c, eta_r = sigma_xy/(eta gammaDot_core), against phi/phi_m =
-1/(1 + I_v^1/2) (eq 15), mu(I_v) (eq 14), phi_m(mu_m) (eq 13).  With
+its contact part mu_c, eta_r = sigma_xy/(eta gammaDot_core) (standard
+errors over the states), against phi/phi_m = 1/(1 + I_v^1/2) (eq 15),
+mu(I_v) (eq 14), eta_r(phi') (eq 16) and phi_m(mu_m) (eq 13).  With
 --against, a results.dat of demFrictionSweep: its article2radius runs
 (cutoff column -2) at the same friction interpolated in ln I_v to this
 core's I_v, the tri-periodic cell at the same I_v.  Writes --report
@@ -32,7 +33,7 @@ import numpy as np  # noqa: E402
 
 from fdmPost.rheology import number, slab_volume, vector  # noqa: E402
 from fdmPost.demRheology import (article2_phi, dem_state,  # noqa: E402
-                                 model_mu, model_mu_contact, phi_m,
+                                 model_eta, model_mu, model_mu_contact, phi_m,
                                  state_files)
 from fdmPost.report import write_markdown  # noqa: E402
 
@@ -103,7 +104,11 @@ def main():
     d = core_rows(args.case, args.start, args.layer,
                   (hi[0] - lo[0]) * (hi[2] - lo[2]), upper)
     gap, phi, rate, sxy, syy, sxy_c = d[:, 1:].mean(0)
-    err = d[:, 2].std(ddof=1) / np.sqrt(len(d)) if len(d) > 1 else np.nan
+
+    def err(column):
+        """Standard error of the mean over the states (uncorrelated)"""
+        return (column.std(ddof=1) / np.sqrt(len(column)) if len(d) > 1
+                else np.nan)
     P = number(props, "pressure") if imposed else -syy
     iv = eta * rate / P
     pm = phi_m(mu_m)
@@ -123,16 +128,19 @@ def main():
         f"| gap (a) | {gap:.2f} | - |",
         f"| core shear rate / wall rate | {rate:.3f} | 1 |",
         f"| I_v = eta gammaDot_core / P | {iv:.4f} | - |",
-        f"| core phi (phi' at article 2's radius) | {phi:.4f} +- {err:.4f}"
+        f"| core phi (phi' at article 2's radius) | {phi:.4f} +-"
+        f" {err(d[:, 2]):.4f}"
         f" ({p2:.4f}) | {pm / (1 + np.sqrt(iv)):.4f} (phi_m {pm:.4f}) |",
         f"| phi' (1 + I_v^1/2) | {p2 * (1 + np.sqrt(iv)):.4f} | {pm:.4f} |",
         f"| core -sigma_yy / P | {-syy / P:.3f} | 1 |",
-        f"| mu = -sigma_xy/sigma_yy | {-sxy / syy:.3f} |"
+        f"| mu = -sigma_xy/sigma_yy | {-sxy / syy:.3f} +-"
+        f" {err(d[:, 4] / d[:, 5]):.3f} |"
         f" {model_mu(iv, pm):.3f} |",
         f"| mu_c (contact part) | {-sxy_c / syy:.3f} |"
         f" {model_mu_contact(iv):.3f} |",
         f"| eta_r = sigma_xy/(eta gammaDot_core) | {sxy / (eta * rate):.2f}"
-        " | - |",
+        f" +- {err(d[:, 4] / (eta * d[:, 3])):.2f} | {model_eta(p2, pm):.2f}"
+        " (eq 16 at phi') |",
     ]
     tri = triperiodic_at(args.against, mu_m, iv) if args.against else None
     if tri:
