@@ -15,10 +15,12 @@ mu(I_v) (eq 14), eta_r(phi') (eq 16) and phi_m(mu_m) (eq 13).  With
 --against, a results.dat of demFrictionSweep: its article2radius runs
 (cutoff column -2) at the same friction interpolated in ln I_v to this
 core's I_v, the tri-periodic cell at the same I_v.  Writes --report
-(default report.md here).
+(default report.md here); with --table, also the run's row of that table
+(replacing the row of the same case name), which plotArticle2Cell.py
+draws.
 
     analyse.py CASE [--start 10] [--layer 3] [--against RESULTS]
-               [--report FILE]
+               [--report FILE] [--table FILE]
 """
 
 import argparse
@@ -81,6 +83,21 @@ def triperiodic_at(path, mu_m, iv):
                          ("muContact", 8))}
 
 
+TABLE_HEADER = ("# case mu_m Iv phi phiArticle2 mu muErr muContact eta_r"
+                " eta_rErr  (analyse.py: core averages of the walled cell)")
+
+
+def write_row(path, name, values):
+    """Put the case's row into the table at path, replacing its old row."""
+    rows = []
+    if os.path.exists(path):
+        rows = [r for r in open(path).read().splitlines()
+                if r and not r.startswith("#") and r.split()[0] != name]
+    rows.append(" ".join([name] + ["%.6g" % v for v in values]))
+    with open(path, "w") as f:
+        f.write("\n".join([TABLE_HEADER] + sorted(rows)) + "\n")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("case")
@@ -89,6 +106,7 @@ def main():
     ap.add_argument("--against")
     ap.add_argument("--report", default=os.path.join(os.path.dirname(
         os.path.abspath(__file__)), "report.md"))
+    ap.add_argument("--table")
     args = ap.parse_args()
 
     props = open(os.path.join(args.case, "constant",
@@ -155,6 +173,11 @@ def main():
         lines += ["", f"No article2radius runs of {args.against} at mu_m"
                   f" {mu_m:g} around I_v {iv:.4f}."]
     write_markdown(args.report, lines)
+    if args.table:
+        write_row(args.table, os.path.basename(os.path.normpath(args.case)),
+                  (mu_m, iv, phi, p2, -sxy / syy, err(d[:, 4] / d[:, 5]),
+                   -sxy_c / syy, sxy / (eta * rate),
+                   err(d[:, 4] / (eta * d[:, 3]))))
 
 
 if __name__ == "__main__":
