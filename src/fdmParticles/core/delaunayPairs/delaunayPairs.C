@@ -50,6 +50,7 @@ struct domainBounds
 };
 
 
+//- The domain of the spheres in box
 domainBounds boundsOf
 (
     const fdm::periodicBox& box,
@@ -252,6 +253,32 @@ bool collectEdges
     return true;
 }
 
+
+//- The distinct edges as pairs; FatalError on a sphere neighbouring its
+//  own periodic image
+void toPairs
+(
+    std::vector<std::pair<label, label>>& edges,
+    const vector& L,
+    DynamicList<labelPair>& pairs
+)
+{
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    pairs.setCapacity(edges.size());
+    for (const auto& e : edges)
+    {
+        if (e.first == e.second)
+        {
+            FatalErrorInFunction
+                << "Particle " << e.first << " neighbours its own periodic"
+                << " image: the cell " << L << " is too small for"
+                << " Delaunay neighbours" << abort(FatalError);
+        }
+        pairs.append(labelPair(e.first, e.second));
+    }
+}
+
 } // namespace
 
 
@@ -329,20 +356,7 @@ Foam::fdm::delaunayStatistics Foam::fdm::findDelaunayPairs
         rt.insert(points.begin(), points.end());
     }
 
-    std::sort(edges.begin(), edges.end());
-    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
-    pairs.setCapacity(edges.size());
-    for (const auto& e : edges)
-    {
-        if (e.first == e.second)
-        {
-            FatalErrorInFunction
-                << "Particle " << e.first << " neighbours its own periodic"
-                << " image: the cell " << L << " is too small for"
-                << " Delaunay neighbours" << abort(FatalError);
-        }
-        pairs.append(labelPair(e.first, e.second));
-    }
+    toPairs(edges, L, pairs);
 
     label nVisible = 0;
     for (auto v = rt.finite_vertices_begin(); v != rt.finite_vertices_end(); ++v)

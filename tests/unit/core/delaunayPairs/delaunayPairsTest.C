@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <random>
 #include <set>
+#include <string>
 
 using namespace Foam;
 
@@ -33,6 +34,13 @@ pairSet toSet(const UList<labelPair>& pairs)
 fdm::periodicBox cube(const scalar L)
 {
     return fdm::periodicBox(point::zero, point(L, L, L), {true, true, true});
+}
+
+
+//- A cell periodic in x and z with walls along y
+fdm::periodicBox slab(const scalar L, const scalar H)
+{
+    return fdm::periodicBox(point::zero, point(L, H, L), {true, false, true});
 }
 
 
@@ -113,6 +121,53 @@ pairSet radicalPointPairs
     return must;
 }
 
+
+//- The pairs of a random packing (randomPacking) of n spheres in box
+pairSet packedPairs
+(
+    const fdm::periodicBox& box,
+    const label n,
+    const unsigned seed,
+    List<point>& x,
+    List<scalar>& a
+)
+{
+    randomPacking(box, n, seed, x, a);
+    DynamicList<labelPair> pairs;
+    fdm::findDelaunayPairs(box, x, a, pairs);
+    return toSet(pairs);
+}
+
+
+//- Random packing of n spheres in box: its pairs include every pair of
+//  radicalPointPairs, and none is longer than 8 (the neighbours of a
+//  dense-ish packing are a few radii apart)
+void expectRadicalPairsAndShortEdges
+(
+    const fdm::periodicBox& box,
+    const label n,
+    const unsigned seed
+)
+{
+    List<point> x;
+    List<scalar> a;
+    randomPacking(box, n, seed, x, a);
+    DynamicList<labelPair> pairs;
+    fdm::findDelaunayPairs(box, x, a, pairs);
+
+    const pairSet found(toSet(pairs));
+    const pairSet must(radicalPointPairs(box, x, a));
+    ASSERT_GT(must.size(), x.size());
+    for (const auto& p : must)
+    {
+        EXPECT_TRUE(found.count(p)) << "pair " << p.first << " " << p.second;
+    }
+    for (const labelPair& p : pairs)
+    {
+        EXPECT_LT(mag(box.minimumImage(x[p.second()] - x[p.first()])), 8);
+    }
+}
+
 } // namespace
 
 
@@ -147,28 +202,10 @@ TEST(delaunayPairs, RadicalPointNeighboursAreFound)
 {
     for (const scalar shearOffset : {0.0, 3.7})
     {
+        SCOPED_TRACE("shear offset " + std::to_string(shearOffset));
         fdm::periodicBox box(cube(16));
         box.setShearOffset(shearOffset);
-        List<point> x;
-        List<scalar> a;
-        randomPacking(box, 150, 3, x, a);   // volume fraction 0.29
-        DynamicList<labelPair> pairs;
-        fdm::findDelaunayPairs(box, x, a, pairs);
-
-        const pairSet found(toSet(pairs));
-        const pairSet must(radicalPointPairs(box, x, a));
-        ASSERT_GT(must.size(), x.size());
-        for (const auto& p : must)
-        {
-            EXPECT_TRUE(found.count(p))
-                << "pair " << p.first << " " << p.second
-                << " (shear offset " << shearOffset << ")";
-        }
-        // A dense-ish packing: neighbours at most a few radii apart
-        for (const labelPair& p : pairs)
-        {
-            EXPECT_LT(mag(box.minimumImage(x[p.second()] - x[p.first()])), 8);
-        }
+        expectRadicalPairsAndShortEdges(box, 150, 3);   // volume fraction 0.29
     }
 }
 
@@ -216,35 +253,11 @@ TEST(delaunayPairs, PeriodicTranslationKeepsThePairs)
 }
 
 
-//- A cell periodic in x and z with walls along y
-fdm::periodicBox slab(const scalar L, const scalar H)
-{
-    return fdm::periodicBox(point::zero, point(L, H, L), {true, false, true});
-}
-
-
+// Without the mirror images the convex hull's edges would join spheres
+// along the walls across the whole cell
 TEST(delaunayPairs, WalledRadicalPointNeighboursAreFound)
 {
-    const fdm::periodicBox box(slab(16, 14));
-    List<point> x;
-    List<scalar> a;
-    randomPacking(box, 130, 17, x, a);     // volume fraction 0.29
-    DynamicList<labelPair> pairs;
-    fdm::findDelaunayPairs(box, x, a, pairs);
-
-    const pairSet found(toSet(pairs));
-    const pairSet must(radicalPointPairs(box, x, a));
-    ASSERT_GT(must.size(), x.size());
-    for (const auto& p : must)
-    {
-        EXPECT_TRUE(found.count(p)) << "pair " << p.first << " " << p.second;
-    }
-    // Without the mirror images the convex hull's edges would join
-    // spheres along the walls across the whole cell
-    for (const labelPair& p : pairs)
-    {
-        EXPECT_LT(mag(box.minimumImage(x[p.second()] - x[p.first()])), 8);
-    }
+    expectRadicalPairsAndShortEdges(slab(16, 14), 130, 17); // fraction 0.29
 }
 
 
@@ -254,12 +267,9 @@ TEST(delaunayPairs, WalledRadicalPointNeighboursAreFound)
 // periodic triangulation has the walled cell's pairs between the spheres
 TEST(delaunayPairs, WallsAreTheMirroredCellsPairs)
 {
-    const fdm::periodicBox box(slab(16, 14));
     List<point> x;
     List<scalar> a;
-    randomPacking(box, 130, 23, x, a);
-    DynamicList<labelPair> pairs;
-    fdm::findDelaunayPairs(box, x, a, pairs);
+    const pairSet pairs(packedPairs(slab(16, 14), 130, 23, x, a));
 
     scalar lo = GREAT;
     scalar hi = -GREAT;
@@ -292,7 +302,7 @@ TEST(delaunayPairs, WallsAreTheMirroredCellsPairs)
             reference.insert({p.first(), p.second()});
         }
     }
-    EXPECT_EQ(toSet(pairs), reference);
+    EXPECT_EQ(pairs, reference);
 }
 
 
@@ -301,9 +311,7 @@ TEST(delaunayPairs, WalledCellReflectedKeepsThePairs)
     const fdm::periodicBox box(slab(16, 14));
     List<point> x;
     List<scalar> a;
-    randomPacking(box, 130, 29, x, a);
-    DynamicList<labelPair> pairs;
-    fdm::findDelaunayPairs(box, x, a, pairs);
+    const pairSet pairs(packedPairs(box, 130, 29, x, a));
 
     // Upside down and shifted along the periodic x and z
     List<point> moved(x.size());
@@ -313,5 +321,5 @@ TEST(delaunayPairs, WalledCellReflectedKeepsThePairs)
     }
     DynamicList<labelPair> movedPairs;
     fdm::findDelaunayPairs(box, moved, a, movedPairs);
-    EXPECT_EQ(toSet(pairs), toSet(movedPairs));
+    EXPECT_EQ(pairs, toSet(movedPairs));
 }
