@@ -83,6 +83,14 @@ def triperiodic_at(path, mu_m, iv):
                          ("muContact", 8))}
 
 
+def standard_error(column):
+    """Standard error of the mean over the states, taken as uncorrelated
+    (nan for one state)."""
+    if len(column) < 2:
+        return np.nan
+    return column.std(ddof=1) / np.sqrt(len(column))
+
+
 TABLE_HEADER = ("# case mu_m Iv phi phiArticle2 mu muErr muContact eta_r"
                 " eta_rErr  (analyse.py: core averages of the walled cell)")
 
@@ -122,11 +130,9 @@ def main():
     d = core_rows(args.case, args.start, args.layer,
                   (hi[0] - lo[0]) * (hi[2] - lo[2]), upper)
     gap, phi, rate, sxy, syy, sxy_c = d[:, 1:].mean(0)
-
-    def err(column):
-        """Standard error of the mean over the states (uncorrelated)"""
-        return (column.std(ddof=1) / np.sqrt(len(column)) if len(d) > 1
-                else np.nan)
+    phi_err = standard_error(d[:, 2])
+    mu_err = standard_error(d[:, 4] / d[:, 5])
+    eta_r_err = standard_error(d[:, 4] / (eta * d[:, 3]))
     P = number(props, "pressure") if imposed else -syy
     iv = eta * rate / P
     pm = phi_m(mu_m)
@@ -147,17 +153,17 @@ def main():
         f"| core shear rate / wall rate | {rate:.3f} | 1 |",
         f"| I_v = eta gammaDot_core / P | {iv:.4f} | - |",
         f"| core phi (phi' at article 2's radius) | {phi:.4f} +-"
-        f" {err(d[:, 2]):.4f}"
+        f" {phi_err:.4f}"
         f" ({p2:.4f}) | {pm / (1 + np.sqrt(iv)):.4f} (phi_m {pm:.4f}) |",
         f"| phi' (1 + I_v^1/2) | {p2 * (1 + np.sqrt(iv)):.4f} | {pm:.4f} |",
         f"| core -sigma_yy / P | {-syy / P:.3f} | 1 |",
         f"| mu = -sigma_xy/sigma_yy | {-sxy / syy:.3f} +-"
-        f" {err(d[:, 4] / d[:, 5]):.3f} |"
+        f" {mu_err:.3f} |"
         f" {model_mu(iv, pm):.3f} |",
         f"| mu_c (contact part) | {-sxy_c / syy:.3f} |"
         f" {model_mu_contact(iv):.3f} |",
         f"| eta_r = sigma_xy/(eta gammaDot_core) | {sxy / (eta * rate):.2f}"
-        f" +- {err(d[:, 4] / (eta * d[:, 3])):.2f} | {model_eta(p2, pm):.2f}"
+        f" +- {eta_r_err:.2f} | {model_eta(p2, pm):.2f}"
         " (eq 16 at phi') |",
     ]
     tri = triperiodic_at(args.against, mu_m, iv) if args.against else None
@@ -175,9 +181,8 @@ def main():
     write_markdown(args.report, lines)
     if args.table:
         write_row(args.table, os.path.basename(os.path.normpath(args.case)),
-                  (mu_m, iv, phi, p2, -sxy / syy, err(d[:, 4] / d[:, 5]),
-                   -sxy_c / syy, sxy / (eta * rate),
-                   err(d[:, 4] / (eta * d[:, 3]))))
+                  (mu_m, iv, phi, p2, -sxy / syy, mu_err, -sxy_c / syy,
+                   sxy / (eta * rate), eta_r_err))
 
 
 if __name__ == "__main__":

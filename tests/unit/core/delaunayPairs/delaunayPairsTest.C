@@ -151,20 +151,16 @@ void expectRadicalPairsAndShortEdges
 {
     List<point> x;
     List<scalar> a;
-    randomPacking(box, n, seed, x, a);
-    DynamicList<labelPair> pairs;
-    fdm::findDelaunayPairs(box, x, a, pairs);
-
-    const pairSet found(toSet(pairs));
+    const pairSet found(packedPairs(box, n, seed, x, a));
     const pairSet must(radicalPointPairs(box, x, a));
     ASSERT_GT(must.size(), x.size());
     for (const auto& p : must)
     {
         EXPECT_TRUE(found.count(p)) << "pair " << p.first << " " << p.second;
     }
-    for (const labelPair& p : pairs)
+    for (const auto& p : found)
     {
-        EXPECT_LT(mag(box.minimumImage(x[p.second()] - x[p.first()])), 8);
+        EXPECT_LT(mag(box.minimumImage(x[p.second] - x[p.first])), 8);
     }
 }
 
