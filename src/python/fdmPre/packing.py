@@ -216,7 +216,8 @@ def row_layer(box, axis, side, radius, gap=0.01):
     sqrt(s_x^2 + s_r^2)/2 of a centre whatever the rows' shifts along x,
     which must stay below 2a: no sphere of radius a passes even when the
     rows slide past each other (a floor carried by a shear along x across
-    the rows: gravity along the vorticity)."""
+    the rows: gravity along the vorticity).  Returns the centres and the
+    radii."""
     other = 3 - axis                      # the in-plane direction besides x
     n = [int(box.span[k] // (2 * radius * (1 + gap))) for k in (0, other)]
     sx, sr = box.span[0] / max(n[0], 1), box.span[other] / max(n[1], 1)
@@ -231,19 +232,34 @@ def row_layer(box, axis, side, radius, gap=0.01):
     height = radius * (1 + gap)
     x[:, axis] = (box.lo[axis] + height if side == "lower"
                   else box.lo[axis] + box.span[axis] - height)
-    return x
+    return x, np.full(len(x), float(radius))
+
+
+def _plane_grid(box, plane, spacing):
+    """Cell centres of a grid of about the given spacing over the plane."""
+    n = [max(2, int(np.ceil(box.span[ax] / spacing))) for ax in plane]
+    return np.stack(np.meshgrid(
+        *[box.lo[ax] + (np.arange(m) + 0.5) * box.span[ax] / m
+          for ax, m in zip(plane, n)], indexing="ij"), -1).reshape(-1, 2)
 
 
 def wall_layer(box, axis, side, radius, coverage, seed=1, gap=0.01,
-               jammed=False):
+               jammed=False, pass_radius=None):
     """Spheres touching (at clearance gap) the wall normal to axis on side
     'lower' or 'upper', placed by random sequential addition in the plane
     up to an area coverage (fraction of the wall covered by their discs;
-    random sequential addition jams near 0.547).
+    random sequential addition jams near 0.547).  Returns the centres and
+    the radii.
 
     jammed: go on until no disc fits anywhere (holes found on a grid of
     spacing radius/10), so that no sphere of the same radius can pass
-    through the layer: a floor under an open top (resuspension)."""
+    through the layer: a floor under an open top (resuspension).  A
+    smaller sphere can still pass a jammed layer (a hole admits one of
+    radius up to radius(1 + gap)): with pass_radius, the holes where a
+    sphere of that radius would pass are plugged with smaller spheres
+    centred in the plane of the layer, each as large as its hole allows,
+    until none is left (the grid's resolution, spacing/sqrt 2, is taken
+    off pass_radius): a floor for polydisperse free spheres."""
     rng = np.random.default_rng(seed + 7919 * (side == "upper") + 104729 * axis)
     plane = [k for k in range(3) if k != axis]
     area = box.span[plane[0]] * box.span[plane[1]]
@@ -258,24 +274,36 @@ def wall_layer(box, axis, side, radius, coverage, seed=1, gap=0.01,
                     < clearance).any():
             continue
         pts.append(p)
-    while jammed:
-        # The grid point farthest from every centre: a hole while a disc fits
-        n = [max(2, int(np.ceil(10 * box.span[ax] / radius))) for ax in plane]
-        g = np.stack(np.meshgrid(
-            *[box.lo[ax] + (np.arange(m) + 0.5) * box.span[ax] / m
-              for ax, m in zip(plane, n)], indexing="ij"), -1).reshape(-1, 2)
-        dist = np.full(len(g), np.inf)
-        for c in pts:
-            dist = np.minimum(dist, np.sqrt(
-                (_plane_offsets(g, c, box, plane)**2).sum(1)))
-        k = int(np.argmax(dist))
-        if dist[k] < clearance:
-            break
-        pts.append(g[k])
+    radii = [radius] * len(pts)
+    if jammed:
+        # room: distance from each grid point to the nearest sphere surface
+        grid = _plane_grid(box, plane, radius / 10)
+        room = np.full(len(grid), np.inf)
+
+        def carve(p, r):
+            np.minimum(room, np.sqrt((_plane_offsets(grid, p, box, plane)**2)
+                                     .sum(1)) - r, out=room)
+
+        def add(p, r):
+            carve(p, r)
+            pts.append(p)
+            radii.append(r)
+
+        for p in pts:
+            carve(p, radius)
+        resolution = radius / 10 / np.sqrt(2)
+        while len(room):
+            k = int(np.argmax(room))
+            if room[k] >= radius * (1 + gap):
+                add(grid[k], radius)
+            elif pass_radius and room[k] >= pass_radius - resolution:
+                add(grid[k], room[k] - gap * radius)
+            else:
+                break
     x = np.zeros((len(pts), 3))
     if pts:
         x[:, plane] = pts
     height = radius * (1 + gap)
     x[:, axis] = (box.lo[axis] + height if side == "lower"
                   else box.lo[axis] + box.span[axis] - height)
-    return x
+    return x, np.array(radii, dtype=float)

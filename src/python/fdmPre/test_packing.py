@@ -46,9 +46,10 @@ class Packing(unittest.TestCase):
         self.assertGreater(np.abs(a - c).max(), 1)
 
     def test_attached_layer_stays_on_the_wall(self):
-        lower = wall_layer(self.box, 1, "lower", 1.0, 0.3, seed=2)
-        upper = wall_layer(self.box, 1, "upper", 1.0, 0.3, seed=2)
+        lower, a = wall_layer(self.box, 1, "lower", 1.0, 0.3, seed=2)
+        upper, _ = wall_layer(self.box, 1, "upper", 1.0, 0.3, seed=2)
         fixed = np.r_[lower, upper]
+        self.assertTrue(np.all(a == 1.0))
         self.assertGreater(len(lower), 3)
         r = np.r_[np.ones(len(fixed)), self.radii(0.3)]
         x = pack(self.box, r, seed=2, fixed_positions=fixed)
@@ -56,24 +57,48 @@ class Packing(unittest.TestCase):
         self.assertTrue(np.allclose(x[:len(lower), 1], -4 + 1.01))
         self.assertGreater(min_clearance(x, r, self.box), 0.01 * (1 - 1e-3))
 
-    def test_jammed_floor_lets_no_sphere_through(self):
-        # A sphere passes the layer only where a point of the plane lies
-        # 2a or more from every centre: probe 20000 random points
-        floor = wall_layer(self.box, 1, "lower", 1.0, 0.1, seed=5,
-                           jammed=True)
+    def room(self, floor, radii, n=20000):
+        # Largest radius of a sphere passing the layer: the most room
+        # (distance to the nearest surface) among n random points of the
+        # plane of the centres
         rng = np.random.default_rng(0)
-        probes = self.box.lo[[0, 2]] + rng.random((20000, 2)) * self.box.span[[0, 2]]
+        span = self.box.span[[0, 2]]
+        probes = self.box.lo[[0, 2]] + rng.random((n, 2)) * span
         d = probes[:, None, :] - floor[None, :, [0, 2]]
-        d -= self.box.span[[0, 2]] * np.round(d / self.box.span[[0, 2]])
-        self.assertLess(np.sqrt((d**2).sum(-1)).min(1).max(), 2.0)
+        d -= span * np.round(d / span)
+        return (np.sqrt((d**2).sum(-1)) - radii).min(1).max()
+
+    def test_jammed_floor_lets_no_sphere_through(self):
+        floor, a = wall_layer(self.box, 1, "lower", 1.0, 0.1, seed=5,
+                              jammed=True)
+        self.assertTrue(np.all(a == 1.0))
+        self.assertLess(self.room(floor, a), 1.0)
         coverage = len(floor) * np.pi / (self.box.span[0] * self.box.span[2])
         self.assertGreater(coverage, 0.45)   # near the RSA jamming 0.547
+
+    def test_plugged_floor_keeps_out_smaller_spheres(self):
+        # Jammed alone, a layer of unit spheres lets a sphere of 0.85 pass
+        # (RSA holes); plugged for 0.85, none passes, and the plugs are
+        # smaller than the layer's spheres, larger than 0.85 - resolution
+        floor, a = wall_layer(self.box, 1, "lower", 1.0, 0.1, seed=5,
+                              jammed=True)
+        self.assertGreater(self.room(floor, a), 0.85)
+        floor, a = wall_layer(self.box, 1, "lower", 1.0, 0.1, seed=5,
+                              jammed=True, pass_radius=0.85)
+        self.assertLess(self.room(floor, a), 0.85)
+        plugs = a[a < 1.0]
+        self.assertGreater(len(plugs), 0)
+        self.assertTrue(np.all(plugs > 0.85 - 0.1 / np.sqrt(2) - 0.01))
+        self.assertTrue(np.allclose(floor[:, 1], -4 + 1.01))
+        # The plugs keep the clearance gap to the layer
+        self.assertGreater(min_clearance(floor, a, self.box),
+                           0.01 * (1 - 1e-3))
 
     def test_row_floor_stays_closed_when_sheared(self):
         # Rows along x slid by arbitrary shifts: no plane point 2a or more
         # from every centre (12 a: 5 x 5 at 2.4 a, bound 1.70 a)
         box = Box([0, 0, 0], [12, 12, 20], [True, True, False])
-        floor = row_layer(box, 2, "lower", 1.0)
+        floor, _ = row_layer(box, 2, "lower", 1.0)
         rng = np.random.default_rng(1)
         probes = rng.random((5000, 2)) * 12
         for shift in (0.0, 0.37, 1.2, 2.1):
