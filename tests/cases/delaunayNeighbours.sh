@@ -34,44 +34,8 @@ sed -i -e 's/^endTime .*/endTime 8e-5;/' -e 's/^writeInterval .*/writeInterval 8
 grep -q "lubricated pairs: Delaunay neighbours" "$work/log.lubricatedDEMFoam" \
     || { echo "FAILED: the log does not name the Delaunay neighbours"; exit 1; }
 
-"$FDM_PYTHON" - "$work" <<'PY'
-import itertools, os, sys
-import numpy as np
-from scipy.spatial import Delaunay
-from fdmPost.particleCase import read_list
-
-work = sys.argv[1]
-text = open(os.path.join(work, "8e-05", "particleState")).read()
-x = read_list(text, "position", 3)
-a = read_list(text, "radius", 1)
-pairs = read_list(text, "pairs", 2).astype(int)
-active = read_list(text, "pairActive", 1).astype(bool)
-n, L = len(x), 12.0
-
-shifts = [np.zeros(3)] + [L*np.array(s) for s in
-    itertools.product((-1, 0, 1), repeat=3) if any(s)]
-points = np.concatenate([x + s for s in shifts])
-edges = set()
-for simplex in Delaunay(points).simplices:
-    for u, v in itertools.combinations(simplex, 2):
-        if u < n or v < n:
-            i, j = u % n, v % n
-            edges.add((min(i, j), max(i, j)))
-listed = set(map(tuple, pairs))
-print("   %d particles, %d listed pairs, %d Qhull edges, %d in both"
-      % (n, len(listed), len(edges), len(listed & edges)))
-ok = listed == edges and len(pairs) == len(listed)
-
-d = x[pairs[:, 1]] - x[pairs[:, 0]]
-d -= L*np.round(d/L)
-gap = np.linalg.norm(d, axis=1) - a[pairs[:, 0]] - a[pairs[:, 1]]
-inReach = gap < 0.5*0.5*(a[pairs[:, 0]] + a[pairs[:, 1]])
-print("   %d pairs within the cut-off 0.5 a, %d interacting, %d mismatches"
-      % (inReach.sum(), active.sum(), (inReach != active).sum()))
-ok &= (inReach == active).all() and 0 < active.sum() < len(active)
-sys.exit(0 if ok else 1)
-PY
-[ $? -eq 0 ] || exit 1
+"$FDM_PYTHON" "$caseTemplates/checkDelaunayPairs.py" \
+    "$work/8e-05/particleState" 12 periodic || exit 1
 
 # Sheared: straight against restarted halfway, every 3 steps
 sheared()
@@ -122,34 +86,5 @@ foamDictionary -entry cell -set "{ min (0 0 0); max (12 14 12); shearRate 0; ope
 (cd "$walled" && runLogged fdmPackParticles --box 12 14 12 --walls y --ratio 1 \
     --phi 0.45 --gap 0.05 --seed 4 -o constant/particleList \
     && runLogged lubricatedDEMFoam) || exit 1
-"$FDM_PYTHON" - "$walled" <<'PY' || exit 1
-import itertools, os, sys
-import numpy as np
-from scipy.spatial import Delaunay
-from fdmPost.particleCase import read_list
-
-work = sys.argv[1]
-text = open(os.path.join(work, "8e-05", "particleState")).read()
-x = read_list(text, "position", 3)
-a = read_list(text, "radius", 1)
-pairs = read_list(text, "pairs", 2).astype(int)
-n, L = len(x), 12.0
-lo, hi = (x[:, 1] - a).min(), (x[:, 1] + a).max()
-
-images = [x + L*np.array((i, 0, k)) for i in (-1, 0, 1) for k in (-1, 0, 1)]
-images.sort(key=lambda p: np.abs(p - x).sum())      # the centres first
-plain = np.concatenate(images)
-mirrored = [plain*(1, -1, 1) + (0, 2*plane, 0) for plane in (lo, hi)]
-points = np.concatenate([plain] + mirrored)
-edges = set()
-for simplex in Delaunay(points).simplices:
-    for u, v in itertools.combinations(simplex, 2):
-        if (u < n or v < n) and u < len(plain) and v < len(plain):
-            i, j = u % n, v % n
-            edges.add((min(i, j), max(i, j)))
-listed = set(map(tuple, pairs))
-print("   walls along y: %d particles, %d listed pairs, %d Qhull edges"
-      " (mirror images in the walls), %d in both"
-      % (n, len(listed), len(edges), len(listed & edges)))
-sys.exit(0 if listed == edges and len(pairs) == len(listed) else 1)
-PY
+"$FDM_PYTHON" "$caseTemplates/checkDelaunayPairs.py" \
+    "$walled/8e-05/particleState" 12 walls || exit 1
