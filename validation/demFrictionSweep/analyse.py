@@ -43,7 +43,8 @@ import matplotlib  # noqa: E402
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-from fdmPost.demRheology import (averages, article2_phi,  # noqa: E402
+from fdmPost.demRheology import (ARTICLE2_ROUGHNESS, averages,  # noqa: E402
+                                 article2_phi,
                                  finished, fit_phi_m,
                                  master_phi_m, phi_m, model_eta, model_mu,
                                  model_mu_contact, model_mu_hydrodynamic,
@@ -66,7 +67,6 @@ COLUMNS = ("mu_m", "phiNominal", "cutoff", "phi", "Iv", "mu", "eta_r",
 DELAUNAY, ARTICLE2, ARTICLE2_RADIUS, ARTICLE2_LAW, ARTICLE3 = 0, -1, -2, -3, -4
 PAIRS = {"D": DELAUNAY, "A": ARTICLE2, "R": ARTICLE2_RADIUS,
          "L": ARTICLE2_LAW, "T": ARTICLE3}
-ARTICLE2_ROUGHNESS = 2e-2
 # The small-I_v range of article 2's power law 1 - phi/phi_m ~ I_v^n
 # (10^-4 - 10^-1), with room for the run at 0.13
 SMALL_IV = 0.15

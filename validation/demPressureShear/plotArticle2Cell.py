@@ -20,11 +20,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-from fdmPost.demRheology import article2_phi, model_mu, phi_m  # noqa: E402
+from fdmPost.demRheology import (ARTICLE2_ROUGHNESS, article2_phi,  # noqa: E402
+                                 model_mu, phi_m)
 from analyse import TRIPERIODIC_RADIUS_ARMS  # noqa: E402
-
-ROUGHNESS = 2e-2   # article2radius and article2Cell
-
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
@@ -42,7 +40,7 @@ def main():
         t = t[np.argsort(t[:, 4])]
         iv = np.logspace(-3.5, 0.5, 100)
         pm = phi_m(mu_m)
-        left.plot(t[:, 4], article2_phi(t[:, 3], ROUGHNESS), "s--",
+        left.plot(t[:, 4], article2_phi(t[:, 3], ARTICLE2_ROUGHNESS), "s--",
                   mfc="none", label=f"tri-periodic, mu_m {mu_m:g}")
         left.plot(w[:, 1], w[:, 3], "o", ms=8, label=f"walled, mu_m {mu_m:g}")
         left.plot(iv, pm / (1 + np.sqrt(iv)), "k-",

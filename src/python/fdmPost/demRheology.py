@@ -29,6 +29,11 @@ def phi_m(mu_m, p0=0.6301, dp=0.0794, mu_star=0.4032):
     return p0 - dp * (1 - np.exp(-np.asarray(mu_m) / mu_star))
 
 
+# Article 2's roughness eps (section II.C), that of the runs read with
+# its radius (validation/demFrictionSweep and demPressureShear)
+ARTICLE2_ROUGHNESS = 2e-2
+
+
 def article2_phi(phi, roughness):
     """The volume fraction of article 2's radius for spheres run with this
     DEM's law (article 1) at phi.  Article 2 puts the asperities inside
