@@ -292,7 +292,7 @@ def wall_layer(box, axis, side, radius, coverage, seed=1, gap=0.01,
         for p in pts:
             carve(p, radius)
         resolution = radius / 10 / np.sqrt(2)
-        while len(room):
+        while True:
             k = int(np.argmax(room))
             if room[k] >= radius * (1 + gap):
                 add(grid[k], radius)
