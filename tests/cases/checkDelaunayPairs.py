@@ -76,6 +76,9 @@ def main(path, L, mode):
     x = read_list(text, "position", 3)
     a = read_list(text, "radius", 1)
     pairs = read_list(text, "pairs", 2).astype(int)
+    if mode not in ("periodic", "walls"):
+        sys.exit(f"checkDelaunayPairs.py: mode {mode}: allowed periodic,"
+                 " walls")
     edges = (periodic_edges(x, L) if mode == "periodic"
              else walled_edges(x, a, L))
     listed = set(map(tuple, pairs))

@@ -43,7 +43,8 @@ def main():
         t = t[np.argsort(t[:, 4])]
         iv = np.logspace(-3.5, 0.5, 100)
         pm = phi_m(mu_m)
-        left.plot(t[:, 4], article2_phi(t[:, 3], ARTICLE2_ROUGHNESS), "s--",
+        t_phi = article2_phi(t[:, 3], ARTICLE2_ROUGHNESS)
+        left.plot(t[:, 4], t_phi, "s--",
                   mfc="none", label=f"tri-periodic, mu_m {mu_m:g}")
         left.plot(w[:, 1], w[:, 3], "o", ms=8, label=f"walled, mu_m {mu_m:g}")
         left.plot(iv, pm / (1 + np.sqrt(iv)), "k-",
@@ -59,7 +60,7 @@ def main():
             left.plot(span, fm / (1 + c * span**n), "r:",
                       label=f"fit: phi_m {fm:.3f} +- {err[0]:.3f}")
         p = np.linspace(0.42, pm - 0.005, 100)
-        third.plot(article2_phi(t[:, 3], ARTICLE2_ROUGHNESS), t[:, 6], "s--",
+        third.plot(t_phi, t[:, 6], "s--",
                    mfc="none", label=f"tri-periodic, mu_m {mu_m:g}")
         third.errorbar(w[:, 3], w[:, 7], w[:, 8], fmt="o", ms=8,
                        label=f"walled, mu_m {mu_m:g}")
